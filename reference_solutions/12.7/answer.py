@@ -1,0 +1,15 @@
+"""Problem 12.7: the spring pendulum in polar coordinates (r, theta)."""
+from sympy import Eq, Function, cos, sin, sqrt, symbols
+
+t = symbols("t")
+m, k, l0, g = symbols("m k l0 g", positive=True)
+r, theta = Function("r")(t), Function("theta")(t)
+rd, thd = r.diff(t), theta.diff(t)
+
+L = m / 2 * (rd**2 + r**2 * thd**2) + m * g * r * cos(theta) - k / 2 * (r - l0) ** 2
+eom = [
+    Eq(m * r.diff(t, 2), m * r * thd**2 + m * g * cos(theta) - k * (r - l0)),
+    Eq(m * r**2 * theta.diff(t, 2) + 2 * m * r * rd * thd, -m * g * r * sin(theta)),
+]
+# (b) with theta = 0 the radial equation is m r'' = m g - k (r - l0): SHM about l0 + m g/k
+omega = sqrt(k / m)

@@ -1,0 +1,88 @@
+"""Reading an answer file into sympy objects, whatever it holds, without trusting it.
+
+``.py`` files run in the sandbox and come back as text that is rebuilt without eval; ``.toml``
+files are parsed without running anything. Either way the result is the same: the values bound
+to the problem's part names, and a list of one-line problems naming the file and line.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lagrade.answers.rebuild import RebuildError, decode_value
+from lagrade.answers.screen import AnswerProblem
+from lagrade.answers.text import load_toml_answer
+from lagrade.spec import Problem
+
+
+def answer_names(problem: Problem) -> dict[str, str]:
+    """Every name an answer may bind (part names and aliases) -> the part it answers."""
+    names = {}
+    for part in problem.parts:
+        names[part.name] = part.name
+        for alias in part.aliases:
+            names[alias] = part.name
+    return names
+
+
+@dataclass
+class LoadedAnswer:
+    """What an answer file gave: values by part name, and what went wrong reading it."""
+
+    values: dict[str, object] = field(default_factory=dict)
+    problems: list[AnswerProblem] = field(default_factory=list)
+    #: set when the file did not run to its end: parts it never bound are invalid, not missing
+    fatal: AnswerProblem | None = None
+    #: a problem that concerns one part only (a text answer that does not parse)
+    part_problems: dict[str, AnswerProblem] = field(default_factory=dict)
+
+
+def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
+    """Read ``answer.py`` (sandboxed) or ``answer.toml`` (parsed) for ``problem``."""
+    names = answer_names(problem)
+    if not path.is_file():
+        missing = AnswerProblem(file=str(path), line=None, message="no such answer file")
+        return LoadedAnswer(problems=[missing], fatal=missing)
+    out = LoadedAnswer()
+    if path.suffix == ".toml":
+        coords = sorted({c.name for s in problem.systems for c in s.coordinates})
+        known = [p.name for p in problem.parameters] + [f"p_{c}" for c in coords] + \
+            [f"delta_{c}" for c in coords] + [s for part in problem.parts for s in part.symbols] + ["t"]
+        raw, problems = load_toml_answer(path, coords, known)
+        text = path.read_text(encoding="utf-8", errors="replace")
+        for prob in problems:
+            for name in names:
+                if prob.line is not None and _binds(text, prob.line, name):
+                    out.part_problems[names[name]] = prob
+        if any(prob.line is None for prob in problems):
+            out.fatal = next(prob for prob in problems if prob.line is None)
+    elif path.suffix == ".py":
+        from lagrade.answers.sandbox import SandboxLimits, run_answer_file
+
+        outcome = run_answer_file(path, list(names), limits or SandboxLimits())
+        problems = list(outcome.problems)
+        if outcome.status != "ok" and problems:
+            out.fatal = problems[0]
+        raw = {}
+        for name, encoded in outcome.values.items():
+            try:
+                raw[name] = decode_value(encoded)
+            except RebuildError as exc:
+                problems.append(AnswerProblem(file=str(path), line=None, message=f"{name}: {exc}"))
+    else:
+        wrong = AnswerProblem(file=str(path), line=None, message="an answer file must be a .py or a .toml file")
+        return LoadedAnswer(problems=[wrong], fatal=wrong)
+    out.problems = problems
+    for name, value in raw.items():
+        if name in names:
+            out.values.setdefault(names[name], value)
+        elif path.suffix == ".toml":
+            out.problems.append(AnswerProblem(file=str(path), line=None,
+                                              message=f"'{name}' is not a part of problem {problem.id}; ignored"))
+    return out
+
+
+def _binds(text: str, line: int, name: str) -> bool:
+    lines = text.splitlines()
+    return 0 < line <= len(lines) and lines[line - 1].split("=", 1)[0].strip() == name

@@ -1,0 +1,376 @@
+"""Rebuild sympy objects from untrusted ``srepr`` text, without ``eval``.
+
+The sandbox sends a student's values back as ``sympy.srepr`` strings.  Evaluating them would
+hand the student's process a way into the grader, so instead the text is parsed with ``ast``
+and only calls to an allowlist of sympy constructors are performed.  Number sizes, nesting and
+exact numeric powers are bounded *before* sympy gets to work, so that hostile text such as
+``Pow(Integer(10), Pow(Integer(10), Integer(10)))`` fails fast instead of hanging the grader.
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+import re
+from typing import Any, Literal
+
+import sympy as sp
+from pydantic import BaseModel, ConfigDict, StrictBool, StrictFloat, StrictInt, StrictStr, model_validator
+from sympy.core.assumptions import _assume_defined
+from sympy.core.function import UndefinedFunction
+
+MAX_TEXT_CHARS = 1_000_000
+MAX_NODES = 300_000
+MAX_DEPTH = 100
+MAX_INT_ABS = 10**60
+MAX_TOTAL_INT_DIGITS = 200_000
+MAX_POWER_DIGITS = 10_000
+MAX_NAME_CHARS = 64
+MAX_FLOAT_PRECISION = 10_000
+MAX_DERIVATIVE_ORDER = 100
+
+_FLOAT_TEXT = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d{1,5})?$|^[+-]?(inf|nan)$", re.I)
+
+
+class RebuildError(ValueError):
+    """The text is not a safe, well-formed sympy ``srepr`` (or is too large to rebuild)."""
+
+
+class EncodedValue(BaseModel):
+    """A student's value as it crosses from the sandbox: plain JSON, never pickles.
+
+    ``expr`` carries ``srepr`` text; ``list``/``dict`` nest (a dict as ``[key, value]`` pairs).
+    """
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    kind: Literal["expr", "bool", "int", "float", "str", "list", "dict"]
+    srepr: StrictStr | None = None
+    value: StrictBool | StrictInt | StrictFloat | StrictStr | None = None
+    items: list[EncodedValue] | list[tuple[EncodedValue, EncodedValue]] | None = None
+
+    @model_validator(mode="after")
+    def _consistent(self) -> EncodedValue:
+        expected = {"bool": bool, "int": int, "float": float, "str": str}.get(self.kind)
+        if self.kind == "expr" and self.srepr is None:
+            raise ValueError("an expr needs srepr")
+        if expected is not None and (type(self.value) is not expected):
+            if not (self.kind == "float" and type(self.value) is int):
+                raise ValueError(f"a {self.kind} needs a {expected.__name__} value")
+        if self.kind in ("list", "dict"):
+            if self.items is None:
+                raise ValueError(f"a {self.kind} needs items")
+            pairs = [isinstance(i, tuple) for i in self.items]
+            if self.items and any(pairs) != (self.kind == "dict"):
+                raise ValueError(f"bad items for a {self.kind}")
+        return self
+
+
+def decode_value(v: EncodedValue) -> Any:
+    """Turn an :class:`EncodedValue` back into Python/sympy objects (exprs via :func:`rebuild_srepr`)."""
+    return _decode(v, 0)
+
+
+def _decode(v: EncodedValue, depth: int) -> Any:
+    if depth > 50:
+        raise RebuildError("value nested too deeply")
+    if v.kind == "expr":
+        return rebuild_srepr(v.srepr or "")
+    if v.kind == "float":
+        return float(v.value)  # type: ignore[arg-type]
+    if v.kind in ("bool", "int", "str"):
+        return v.value
+    if v.kind == "list":
+        return [_decode(i, depth + 1) for i in v.items or []]  # type: ignore[arg-type]
+    out: dict[Any, Any] = {}
+    for key, val in v.items or []:  # type: ignore[misc]
+        k = _decode(key, depth + 1)
+        if isinstance(k, list):
+            k = tuple(k)
+        try:
+            out[k] = _decode(val, depth + 1)
+        except TypeError as exc:
+            raise RebuildError(f"unusable dict key: {exc}") from None
+    return out
+
+
+# --------------------------------------------------------------------------- limits shared with text.py
+
+def check_int(value: int) -> None:
+    """Refuse integers beyond the size any mechanics answer needs."""
+    if abs(value) > MAX_INT_ABS:
+        raise RebuildError("integer too large (more than 60 digits)")
+
+
+def check_power(base: Any, exp: Any) -> None:
+    """Refuse exact numeric powers whose result would be huge, before sympy computes them."""
+    if not (isinstance(exp, sp.Rational) or isinstance(exp, int)):
+        return  # symbolic or Float exponent: sympy leaves it alone or uses floating point
+    exp = sp.Rational(exp)
+    if isinstance(base, int):
+        base = sp.Integer(base)
+    if not isinstance(base, sp.Basic) or not base.is_number or isinstance(base, sp.Float):
+        return
+    if abs(exp.q) > MAX_POWER_DIGITS:
+        raise RebuildError("exponent denominator too large")
+    if isinstance(base, sp.Rational):
+        size = max(abs(base.p), abs(base.q))
+        if size <= 1:
+            return
+        digits = abs(exp.p) * (size.bit_length() * math.log10(2))
+        if digits > MAX_POWER_DIGITS:
+            raise RebuildError(f"number too large: a power with about {digits:.3g} digits")
+    elif abs(exp.p) > MAX_POWER_DIGITS:  # e.g. (1 + I)**n is expanded exactly by sympy
+        raise RebuildError("exponent too large for an exact numeric power")
+
+
+def check_name(name: Any, what: str = "name") -> str:
+    """Symbol and function names must be short identifiers."""
+    if not isinstance(name, str) or not name.isidentifier() or len(name) > MAX_NAME_CHARS:
+        raise RebuildError(f"invalid {what} {str(name)[:80]!r}: must be an identifier of at most "
+                           f"{MAX_NAME_CHARS} characters")
+    return name
+
+
+def parse_limited(text: str, what: str = "expression") -> ast.AST:
+    """``ast.parse(text, mode="eval")`` with size, nesting and node-count limits."""
+    if not isinstance(text, str):
+        raise RebuildError(f"{what} must be text")
+    if len(text) > MAX_TEXT_CHARS:
+        raise RebuildError(f"{what} too long ({len(text)} characters, limit {MAX_TEXT_CHARS})")
+    _check_bracket_depth(text, what)
+    try:
+        tree = ast.parse(text, mode="eval")
+    except SyntaxError as exc:
+        raise RebuildError(f"{what} is not well formed: {exc.msg}") from None
+    except (ValueError, RecursionError, MemoryError) as exc:
+        raise RebuildError(f"{what} cannot be parsed: {type(exc).__name__}: {exc}") from None
+    count = 0
+    digits = 0
+    for node in ast.walk(tree):
+        count += 1
+        if count > MAX_NODES:
+            raise RebuildError(f"{what} too large (more than {MAX_NODES} syntax nodes)")
+        if isinstance(node, ast.Constant) and isinstance(node.value, int) and not isinstance(node.value, bool):
+            check_int(node.value)
+            digits += len(str(abs(node.value)))
+            if digits > MAX_TOTAL_INT_DIGITS:
+                raise RebuildError(f"{what} contains too many digits")
+    return tree
+
+
+def _check_bracket_depth(text: str, what: str) -> None:
+    """Bound nesting before ``ast.parse`` so deep input fails with our message, not the parser's."""
+    depth = 0
+    quote = ""
+    for ch in text:
+        if quote:
+            if ch == quote:
+                quote = ""
+        elif ch in "'\"":
+            quote = ch
+        elif ch in "([{":
+            depth += 1
+            if depth > MAX_DEPTH:
+                raise RebuildError(f"{what} nested too deeply (more than {MAX_DEPTH} levels)")
+        elif ch in ")]}":
+            depth -= 1
+
+
+# --------------------------------------------------------------------------- srepr constructors
+
+def _symbol(name: Any, **assumptions: Any) -> sp.Symbol:
+    return sp.Symbol(check_name(name, "symbol name"), **_assumptions(assumptions))
+
+
+def _dummy(name: Any, dummy_index: Any = None, **assumptions: Any) -> sp.Symbol:
+    return _symbol(name, **assumptions)  # a Dummy's identity cannot cross processes; a Symbol is honest
+
+
+def _function(name: Any, **assumptions: Any) -> UndefinedFunction:
+    return sp.Function(check_name(name, "function name"), **_assumptions(assumptions))
+
+
+def _assumptions(kwargs: dict[str, Any]) -> dict[str, bool]:
+    for key, value in kwargs.items():
+        if key not in _assume_defined or not isinstance(value, bool):
+            raise RebuildError(f"unsupported symbol option {key}={value!r}")
+    return kwargs
+
+
+def _integer(value: Any) -> sp.Integer:
+    if not isinstance(value, int) or isinstance(value, bool):
+        raise RebuildError("Integer() needs an integer literal")
+    check_int(value)
+    return sp.Integer(value)
+
+
+def _rational(p: Any, q: Any = 1) -> sp.Rational:
+    parts = [int(x) if isinstance(x, sp.Integer) else x for x in (p, q)]
+    if not all(isinstance(x, int) and not isinstance(x, bool) for x in parts):
+        raise RebuildError("Rational() needs integer arguments")
+    for x in parts:
+        check_int(x)
+    if parts[1] == 0:
+        return sp.zoo if parts[0] else sp.nan
+    return sp.Rational(*parts)
+
+
+def _float(value: Any, precision: Any = 53, dps: Any = None) -> sp.Float:
+    if dps is not None:
+        if not isinstance(dps, int) or isinstance(dps, bool) or not 1 <= dps <= MAX_FLOAT_PRECISION // 3:
+            raise RebuildError("Float dps out of range")
+        precision = None
+    elif not isinstance(precision, int) or isinstance(precision, bool) or not 1 <= precision <= MAX_FLOAT_PRECISION:
+        raise RebuildError("Float precision out of range")
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        value = repr(value)
+    if not isinstance(value, str) or len(value) > 4000 or not _FLOAT_TEXT.match(value.strip()):
+        raise RebuildError(f"malformed Float literal {str(value)[:40]!r}")
+    return sp.Float(value, dps=dps) if dps is not None else sp.Float(value, precision=precision)
+
+
+def _pow(base: Any, exp: Any) -> sp.Expr:
+    check_power(base, exp)
+    return sp.Pow(base, exp)
+
+
+def _derivative(expr: Any, *variables: Any) -> sp.Expr:
+    for v in variables:
+        count = v[1] if isinstance(v, (tuple, sp.Tuple)) and len(v) == 2 else 1
+        if isinstance(count, (int, sp.Integer)) and not 0 <= int(count) <= MAX_DERIVATIVE_ORDER:
+            raise RebuildError(f"derivative order {count} out of range")
+    return sp.Derivative(expr, *variables)
+
+
+def _matrix(rows: Any) -> sp.ImmutableMatrix:
+    if not isinstance(rows, list) or not all(isinstance(r, list) for r in rows):
+        raise RebuildError("Matrix() needs a list of rows")
+    return sp.ImmutableMatrix(rows)
+
+
+def _const(value: Any):
+    return lambda: value
+
+
+_CONSTRUCTORS: dict[str, Any] = {
+    "Symbol": _symbol, "Dummy": _dummy, "Function": _function,
+    "Integer": _integer, "Rational": _rational, "Float": _float, "Pow": _pow,
+    "Add": sp.Add, "Mul": sp.Mul, "Derivative": _derivative, "Tuple": sp.Tuple,
+    "Equality": sp.Eq, "Eq": sp.Eq, "Unequality": sp.Ne, "Ne": sp.Ne,
+    "StrictLessThan": sp.Lt, "StrictGreaterThan": sp.Gt, "LessThan": sp.Le, "GreaterThan": sp.Ge,
+    "And": sp.And, "Or": sp.Or, "Not": sp.Not,
+    "Integral": sp.Integral, "Subs": sp.Subs, "Order": sp.Order,
+    "FiniteSet": sp.FiniteSet,
+    "Piecewise": sp.Piecewise, "ExprCondPair": sp.functions.elementary.piecewise.ExprCondPair,
+    "MutableDenseMatrix": _matrix, "ImmutableDenseMatrix": _matrix, "Matrix": _matrix,
+    "ImmutableMatrix": _matrix,
+    # singletons as they appear when srepr is given S.Half etc. directly
+    "Half": _const(sp.S.Half), "One": _const(sp.S.One), "Zero": _const(sp.S.Zero),
+    "NegativeOne": _const(sp.S.NegativeOne), "Pi": _const(sp.pi), "Exp1": _const(sp.E),
+    "ImaginaryUnit": _const(sp.I), "Infinity": _const(sp.oo), "NegativeInfinity": _const(-sp.oo),
+    "ComplexInfinity": _const(sp.zoo), "NaN": _const(sp.nan), "EulerGamma": _const(sp.EulerGamma),
+    "BooleanTrue": _const(sp.true), "BooleanFalse": _const(sp.false),
+}
+for _name in ("sin cos tan cot sec csc asin acos atan acot asec acsc atan2 sinh cosh tanh coth "
+              "asinh acosh atanh acoth exp log sqrt cbrt Abs sign re im arg conjugate floor ceiling "
+              "Max Min Heaviside DiracDelta").split():
+    _CONSTRUCTORS[_name] = getattr(sp, _name)
+
+_CONSTANTS: dict[str, Any] = {
+    "pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "zoo": sp.zoo, "nan": sp.nan,
+    "true": sp.true, "false": sp.false, "EulerGamma": sp.EulerGamma, "GoldenRatio": sp.GoldenRatio,
+    "Catalan": sp.Catalan, "EmptySet": sp.EmptySet, "None": None, "True": True, "False": False,
+}
+
+
+def rebuild_srepr(text: str) -> Any:
+    """Rebuild the sympy object whose ``sympy.srepr`` is ``text``; raises :class:`RebuildError`.
+
+    Usually returns a ``sympy.Basic``; Python tuples/lists/dicts in the text come back as such.
+    """
+    tree = parse_limited(text, "srepr text")
+    try:
+        return _Builder().build(tree.body, 0)  # type: ignore[attr-defined]
+    except RebuildError:
+        raise
+    except RecursionError:
+        raise RebuildError("expression nested too deeply") from None
+    except (TypeError, ValueError, AttributeError, IndexError, KeyError, ZeroDivisionError,
+            OverflowError, NotImplementedError, sp.SympifyError) as exc:
+        raise RebuildError(f"invalid srepr text: {type(exc).__name__}: {str(exc)[:200]}") from None
+
+
+class _Builder:
+    def build(self, node: ast.AST, depth: int) -> Any:
+        if depth > MAX_DEPTH:
+            raise RebuildError(f"expression nested too deeply (more than {MAX_DEPTH} levels)")
+        d = depth + 1
+        if isinstance(node, ast.Constant):
+            if isinstance(node.value, (str, int, float, bool)) or node.value is None:
+                return node.value
+            raise RebuildError(f"unsupported literal {node.value!r:.40}")
+        if isinstance(node, ast.Name):
+            if node.id in _CONSTANTS:
+                return _CONSTANTS[node.id]
+            raise RebuildError(f"unknown name {node.id[:80]!r}")
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+            value = self.build(node.operand, d)
+            if isinstance(value, bool) or not isinstance(value, (int, float, sp.Expr)):
+                raise RebuildError("unary minus on a non-number")
+            return -value if isinstance(node.op, ast.USub) else value
+        if isinstance(node, ast.Tuple):
+            return tuple(self.build(e, d) for e in node.elts)
+        if isinstance(node, ast.List):
+            return [self.build(e, d) for e in node.elts]
+        if isinstance(node, ast.Dict):
+            if any(k is None for k in node.keys):
+                raise RebuildError("'**' in a dict is not allowed")
+            return {self.build(k, d): self.build(v, d) for k, v in zip(node.keys, node.values)}
+        if isinstance(node, ast.Call):
+            return self.call(node, d)
+        raise RebuildError(f"unsupported syntax {type(node).__name__} in srepr text")
+
+    def call(self, node: ast.Call, depth: int) -> Any:
+        func = node.func
+        if isinstance(func, ast.Call):  # Function('theta')(Symbol('t'))
+            if not (isinstance(func.func, ast.Name) and func.func.id == "Function"):
+                raise RebuildError("only Function('name')(...) may be applied")
+            ctor = self.call(func, depth)
+        elif isinstance(func, ast.Name):
+            if func.id not in _CONSTRUCTORS:
+                raise RebuildError(f"unknown constructor {func.id[:80]!r}")
+            ctor = _CONSTRUCTORS[func.id]
+        else:
+            raise RebuildError("only plain constructor names may be called (no attribute access)")
+        if any(isinstance(a, ast.Starred) for a in node.args):
+            raise RebuildError("'*' arguments are not allowed")
+        args = [self.build(a, depth) for a in node.args]
+        kwargs: dict[str, Any] = {}
+        for kw in node.keywords:
+            if kw.arg is None:
+                raise RebuildError("'**' arguments are not allowed")
+            value = self.build(kw.value, depth)
+            if not isinstance(value, (bool, int, str)) or isinstance(value, str) and kw.arg != "name":
+                raise RebuildError(f"unsupported keyword argument {kw.arg}={value!r:.40}")
+            kwargs[kw.arg] = value
+        if kwargs and ctor not in (_symbol, _dummy, _function, _float):
+            raise RebuildError(f"keyword arguments are not allowed for {ast.unparse(func)[:40]}")
+        if isinstance(ctor, UndefinedFunction):
+            if not args:
+                raise RebuildError("an applied function needs arguments")
+            args = [sp.sympify(a, strict=True) for a in args]
+        elif ctor not in (_symbol, _dummy, _function, _float, _integer, _rational, _matrix):
+            args = [_strict(a) for a in args]
+        return ctor(*args, **kwargs)
+
+
+def _strict(value: Any) -> Any:
+    """Arguments of sympy constructors must be sympy objects (strings would be parsed by sympify)."""
+    if isinstance(value, str):
+        raise RebuildError("string arguments are only allowed for names and Float literals")
+    if isinstance(value, tuple):
+        return sp.Tuple(*(_strict(v) for v in value))
+    if isinstance(value, (list, dict)) or value is None:
+        raise RebuildError("unexpected list, dict or None argument")
+    return sp.sympify(value, strict=True)

@@ -1,0 +1,30 @@
+"""One checker per kind of part; the grader looks them up here by the part's ``kind``."""
+
+from lagrade.checkers.base import Context, InvalidAnswer
+from lagrade.checkers.dynamics import check_eom, check_hamilton_eqs, check_hamiltonian, check_lagrangian
+from lagrade.checkers.motion import check_conserved, check_trajectory
+from lagrade.checkers.values import (
+    check_boolean,
+    check_equation_root,
+    check_expression,
+    check_expression_set,
+    check_integer,
+    check_names,
+)
+
+CHECKERS = {
+    "lagrangian": check_lagrangian,
+    "eom": check_eom,
+    "hamiltonian": check_hamiltonian,
+    "hamilton_eqs": check_hamilton_eqs,
+    "expression": check_expression,
+    "expression_set": check_expression_set,
+    "equation_root": check_equation_root,
+    "boolean": check_boolean,
+    "integer": check_integer,
+    "names": check_names,
+    "conserved": check_conserved,
+    "trajectory": check_trajectory,
+}
+
+__all__ = ["CHECKERS", "Context", "InvalidAnswer"]

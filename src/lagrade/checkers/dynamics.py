@@ -1,0 +1,447 @@
+"""Checkers for the dynamics parts: the Lagrangian, equations of motion, H, Hamilton's equations.
+
+Each collects three kinds of evidence: evaluation at random states (refutes almost every wrong
+answer in microseconds), a time-bounded symbolic proof, and trajectories integrated from the same
+initial states. A correct answer is accepted on agreement at every random state even when the
+symbolic proof gives up; a wrong one is refuted by the states and explained by the trajectories.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+import sympy as sp
+
+from lagrade.checkers.base import Context, InvalidAnswer, equation_rows, graded, read_expr, read_sympy
+from lagrade.compare.equations import CompiledRows, analyse_rows
+from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
+from lagrade.compare.trajectory import Comparison, compare_runs
+from lagrade.numeric import agree, compile_exprs, scale_of
+from lagrade.reference import Mechanics, euler_lagrange
+from lagrade.result import PartResult
+from lagrade.sampling import rng_for, sample_points, state_arrays, with_reference_dynamics
+from lagrade.spec import Part
+from lagrade.symbols import T
+
+# ----------------------------------------------------------------------------- helpers
+
+
+def _grouped_points(ctx: Context, mech: Mechanics, part: Part, groups: int = 6, per_group: int = 4):
+    """Points in groups sharing parameters and time, so 'constant' can be told from 'state-dependent'."""
+    pts = sample_points(mech, groups * per_group, rng_for(ctx.problem.id, part.name), extra=part.symbols)
+    for sym in [*mech.params, T, *(sp.Symbol(s) for s in part.symbols)]:
+        v = pts.values[sym]
+        pts.values[sym] = np.repeat(v[::per_group], per_group)
+    return pts, groups, per_group
+
+
+def _trajectory_inits(ctx: Context, mech: Mechanics, part: Part):
+    pts = sample_points(mech, ctx.accuracy.trajectories, rng_for(ctx.problem.id, part.name, "trajectory"),
+                        extra=part.symbols)
+    q, qd, _, params = state_arrays(mech, pts)
+    extra = np.array([pts[sp.Symbol(s)] for s in part.symbols]).reshape(len(part.symbols), pts.K)
+    return q, qd, params, extra
+
+
+def _lagrange_rates(acc: Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray], n: int):
+    def rates(t: float, y: np.ndarray) -> np.ndarray:
+        q, qd = y[:n], y[n:]
+        return np.concatenate([qd, acc(q, qd, np.full(y.shape[1], t))])
+    return rates
+
+
+def _reference_lagrange(mech: Mechanics, params: np.ndarray):
+    n = len(mech.names)
+    return _lagrange_rates(lambda q, qd, t: mech.accelerations(q, qd, t, params), n)
+
+
+def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc) -> Comparison:
+    q, qd, params, extra = _trajectory_inits(ctx, mech, part)
+    n = len(mech.names)
+    stu = _lagrange_rates(lambda q_, qd_, t: student_acc(q_, qd_, t, params, extra), n)
+    labels = [*mech.names, *(f"{x}'" for x in mech.names)]
+    return compare_runs(stu, _reference_lagrange(mech, params), np.concatenate([q, qd]), labels,
+                        mech.system.horizon, ctx.accuracy)
+
+
+def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rates) -> Comparison:
+    q, qd, params, extra = _trajectory_inits(ctx, mech, part)
+    n = len(mech.names)
+    t0 = np.zeros(q.shape[1])
+    p = mech.momenta(q, qd, t0, params)
+
+    def ref(t: float, y: np.ndarray) -> np.ndarray:
+        return mech.hamilton_rates(y[:n], y[n:], np.full(y.shape[1], t), params)
+
+    def stu(t: float, y: np.ndarray) -> np.ndarray:
+        return student_rates(y[:n], y[n:], np.full(y.shape[1], t), params, extra)
+
+    labels = [*mech.names, *(f"p_{x}" for x in mech.names)]
+    return compare_runs(stu, ref, np.concatenate([q, p]), labels, mech.system.horizon, ctx.accuracy)
+
+
+def _decide(part: Part, proof: bool | None, traj: Comparison | None, note: str = "") -> PartResult:
+    """Agreement at every random state already holds when this is called: say what else confirmed it."""
+    extra = f" {note}" if note else ""
+    if proof:
+        return graded(part, 1.0, "symbolic", f"correct: proved equivalent to the reference.{extra}")
+    if traj is not None and traj.agree:
+        return graded(part, 1.0, "trajectory",
+                      f"correct: equal at every sampled state and {traj.describe()}.{extra}")
+    return graded(part, 1.0, "numeric", f"correct: equal at every sampled state.{extra}")
+
+
+def _wrong(part: Part, fraction: float, message: str, traj: Comparison | None) -> PartResult:
+    detail = f" {traj.describe()[0].upper()}{traj.describe()[1:]}." if traj is not None and not traj.agree else ""
+    return graded(part, fraction, "numeric", f"{message}{detail}")
+
+
+def _sentence(parts: list[str]) -> str:
+    text = "; ".join(parts)
+    return (text[:1].upper() + text[1:] + ".") if text else ""
+
+
+def _try(fn: Callable[[], Comparison]) -> Comparison | None:
+    """Trajectory evidence is extra: if a student's expression cannot even be compiled, skip it."""
+    try:
+        return fn()
+    except Exception:  # noqa: BLE001
+        return None
+
+
+def split_energy(L: sp.Expr, mech: Mechanics) -> tuple[sp.Expr, sp.Expr]:
+    """T and V from L: terms with velocities are kinetic, the rest is -V (good for diagnostics)."""
+    terms = sp.Add.make_args(sp.expand(L))
+    vel = set(mech.s.qd)
+    kin = sp.Add(*[term for term in terms if term.free_symbols & vel])
+    return kin, -(sp.expand(L) - kin)
+
+
+# ----------------------------------------------------------------------------- the Lagrangian
+
+
+def _el_matrix(L: sp.Expr, mech: Mechanics, pts, part: Part) -> np.ndarray:
+    args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *mech.params, *(sp.Symbol(s) for s in part.symbols)]
+    return compile_exprs(euler_lagrange(L, mech.s), args)(*pts.args(args))
+
+
+def _scaling(E_s: np.ndarray, E_r: np.ndarray, groups: int, per: int) -> np.ndarray | None:
+    """Per group of shared parameters, the c with E_s = c E_r at every state, or None."""
+    cs = []
+    for g in range(groups):
+        sl = slice(g * per, (g + 1) * per)
+        a, b = E_s[:, sl].ravel(), E_r[:, sl].ravel()
+        denom = float(b @ b)
+        if denom == 0 or not np.all(np.isfinite(a)):
+            return None
+        c = float(a @ b) / denom
+        if not np.all(agree(a, c * b)):
+            return None
+        cs.append(c)
+    return np.array(cs)
+
+
+def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
+    mech = ctx.mech(part)
+    L_s = read_expr(value, part, mech, plain_coordinates=False, max_order=1)
+    if any(L_s.has(a) for a in mech.s.qdd):
+        raise InvalidAnswer(f"{part.name} contains accelerations; a Lagrangian depends on q, q' and t only")
+    pts, groups, per = _grouped_points(ctx, mech, part)
+    E_r = _el_matrix(mech.L, mech, pts, part)
+    E_s = _el_matrix(L_s, mech, pts, part)
+    c = _scaling(E_s, E_r, groups, per)
+
+    def student_acc(q, qd, t, params, extra):
+        return lagrange_solver(L_s)(q, qd, t, params, extra)
+
+    def lagrange_solver(L):
+        el = [e - Qi for e, Qi in zip(euler_lagrange(L, mech.s), mech.Q)]
+        rows = CompiledRows(el, mech.s.qdd, [*mech.s.q, *mech.s.qd, T, *mech.params,
+                                             *(sp.Symbol(s) for s in part.symbols)])
+        return lambda q, qd, t, params, extra: rows.solve([*q, *qd, t, *params, *extra])
+
+    if c is not None and np.allclose(c, 1.0, rtol=1e-8, atol=0):
+        proof = proves_all_zero([a - b for a, b in zip(euler_lagrange(L_s, mech.s), euler_lagrange(mech.L, mech.s))],
+                                ctx.symbolic_seconds, ctx.positive)
+        args = [*mech.s.q, *mech.s.qd, T, *mech.params]
+        diff = compile_exprs([L_s - mech.L], args)(*pts.args(args))[0]
+        constant = all(np.allclose(diff[g * per:(g + 1) * per], diff[g * per], rtol=1e-8,
+                                   atol=1e-8 * scale_of(diff)) for g in range(groups))
+        note = "" if np.allclose(diff, 0, atol=1e-9 * scale_of(diff)) else (
+            "It differs from the usual form by a constant, which changes nothing."
+            if constant else "It differs from the usual form by a total time derivative dF/dt, which gives "
+                             "the same equations of motion.")
+        traj = None if proof else _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
+        return _decide(part, proof, traj, note)
+    if c is not None and np.all(np.abs(c) > 1e-9):
+        same = np.allclose(c, c[0], rtol=1e-6)
+        factor = f"{c[0]:.4g}" if same else "a factor that depends on the parameters"
+        return graded(part, 0.5, "numeric",
+                      f"your Lagrangian is the right one scaled by {factor}: it gives the same equations of motion, "
+                      "but L = T - V fixes the scale (the momenta and H would be off by that factor).")
+    message = _lagrangian_diagnosis(ctx, part, mech, L_s, E_s, pts, groups, per)
+    traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
+    return _wrong(part, 0.0, message, traj)
+
+
+def _lagrangian_diagnosis(ctx, part, mech, L_s, E_s, pts, groups, per) -> str:
+    for mistake in part.mistakes:
+        try:
+            L_m = mech.parse(str(mistake.answer), part.symbols)
+        except Exception:  # noqa: BLE001
+            continue
+        if _scaling(E_s, _el_matrix(L_m, mech, pts, part), groups, per) is not None:
+            return mistake.message
+    kin, pot = split_energy(mech.L, mech)
+    generic = [
+        (kin + pot, "the potential energy has the wrong sign: L = T - V."),
+        (2 * kin - pot, "the kinetic energy is twice too large: is a factor 1/2 missing?"),
+        (kin / 2 - pot, "the kinetic energy is half what it should be."),
+        (kin, "the potential energy is missing."),
+    ]
+    for L_m, message in generic:
+        if L_m != 0 and _scaling(E_s, _el_matrix(L_m, mech, pts, part), groups, per) is not None:
+            return "Incorrect: " + message
+    E_r = _el_matrix(mech.L, mech, pts, part)
+    bad = [name for i, name in enumerate(mech.names) if not np.all(agree(E_s[i], E_r[i]))]
+    return ("Incorrect: the Lagrange equation your L gives for " + ", ".join(bad) +
+            " is not the true one (a term of T or V is missing or wrong).")
+
+
+# ----------------------------------------------------------------------------- equations of motion
+
+
+def _eom_rows(ctx: Context, part: Part, value: object, mech: Mechanics) -> list[sp.Expr]:
+    rows = [read_sympy(r, part, mech, plain_coordinates=False) for r in equation_rows(value, part)]
+    fixed = {s: e for s, e in mech.constrained.items()}
+    return [r.xreplace(fixed) if fixed else r for r in rows]
+
+
+def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
+    mech = ctx.mech(part)
+    rows = _eom_rows(ctx, part, value, mech)
+    if part.linearized:
+        return _check_linearized(ctx, part, mech, rows)
+    pts = with_reference_dynamics(mech, sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name),
+                                                      extra=part.symbols))
+    extra = [sp.Symbol(s) for s in part.symbols]
+    args = [*mech.s.q, *mech.s.qd, T, *mech.params, *extra]
+    compiled = CompiledRows(rows, mech.s.qdd, args)
+    truth = np.array(pts.args(mech.s.qdd))
+    an = analyse_rows(compiled, pts.args(args), truth, list(mech.names))
+
+    def student_acc(q, qd, t, params, extra_v):
+        return compiled.solve([*q, *qd, t, *params, *extra_v])
+
+    if an.fraction >= 1.0:
+        ref_rows = mech.EL
+        proof = None
+        if len(rows) == len(ref_rows):
+            proof = _prove_rows_equivalent(rows, mech, ctx)
+        traj = None if proof else _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
+        return _decide(part, proof, traj)
+    problems = []
+    for i in an.wrong:
+        problems.append(f"equation {i + 1} (the one mainly for {an.labels[i]}'') does not hold for the true motion")
+    if an.rank < an.n and not an.wrong:
+        problems.append(f"your equations determine only {an.rank} of the {an.n} accelerations "
+                        f"({', '.join(x + chr(39) * 2 for x in mech.names)}): an equation is missing or repeated")
+    traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc)) if len(rows) >= an.n else None
+    return _wrong(part, an.fraction, _sentence(problems), traj)
+
+
+def _prove_rows_equivalent(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -> bool | None:
+    """Symbolic proof that the rows are satisfied by the reference accelerations (time-bounded)."""
+    try:
+        with time_bound(ctx.symbolic_seconds):
+            acc = mech.accelerations_symbolic
+    except _OutOfTime:
+        return None
+    subs = dict(zip(mech.s.qdd, acc))
+    return proves_all_zero([r.xreplace(subs) for r in rows], ctx.symbolic_seconds, ctx.positive)
+
+
+def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.Expr]) -> PartResult:
+    """Small oscillations: the rows' linearization about equilibrium must span the reference's."""
+    n = len(mech.names)
+    pts = sample_points(mech, 8, rng_for(ctx.problem.id, part.name), extra=part.symbols)
+    extra = [sp.Symbol(s) for s in part.symbols]
+    eq_exprs = [mech.parse(mech.system.equilibrium.get(name, "0")) for name in mech.names]
+    pargs = [*mech.params, *extra]
+    q_star = compile_exprs(eq_exprs, [T, *pargs])(pts[T], *pts.args(pargs))
+    state = [*mech.s.qdd, *mech.s.qd, *mech.s.q]
+    args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *pargs]
+    zeros = np.zeros((n, pts.K))
+    at_eq = [*q_star, *zeros, *zeros, pts[T], *pts.args(pargs)]
+
+    def linear_part(exprs):
+        jac = compile_exprs([sp.diff(e, v) for e in exprs for v in state], args)(*at_eq)
+        return jac.reshape(len(exprs), 3 * n, pts.K), compile_exprs(exprs, args)(*at_eq)
+
+    A_s, g0 = linear_part(rows)
+    A_r, _ = linear_part(mech.EL)
+    consistent = []
+    for i in range(len(rows)):
+        ok = True
+        for k in range(pts.K):
+            a = A_s[i, :, k]
+            coef, *_ = np.linalg.lstsq(A_r[:, :, k].T, a, rcond=None)
+            resid = a - A_r[:, :, k].T @ coef
+            scale = max(np.abs(a).max(), 1e-300)
+            if not (np.all(np.isfinite(a)) and np.abs(resid).max() <= 1e-7 * scale
+                    and abs(g0[i, k]) <= 1e-7 * max(scale, 1.0)):
+                ok = False
+        consistent.append(ok)
+    use = [i for i, ok in enumerate(consistent) if ok and np.abs(A_s[i]).max() > 0]
+    rank = min((np.linalg.matrix_rank(A_s[use, :, k]) for k in range(pts.K)), default=0) if use else 0
+    fraction = 1.0 if rank >= n and all(consistent) else rank / max(n, len(rows))
+    if fraction >= 1.0:
+        # Linear or not? Compare with the linear extrapolation at a displaced state.
+        rng = rng_for(ctx.problem.id, part.name, "nonlinear")
+        dq = rng.uniform(0.2, 0.5, (3 * n, pts.K))
+        displaced = [*(q_star + dq[2 * n:]), *dq[n:2 * n], *dq[:n], pts[T], *pts.args(pargs)]
+        g = compile_exprs(rows, args)(*displaced)
+        lin = np.einsum("msk,sk->mk", A_s, dq) + g0
+        nonlinear = not np.allclose(g, lin, rtol=1e-6, atol=1e-9 * scale_of(g))
+        note = ("These are the exact (nonlinear) equations; they linearize to the right small-oscillation "
+                "equations, which were asked." if nonlinear else "")
+        return graded(part, 1.0, "numeric", ("correct: your equations are the small-oscillation equations about "
+                                             "equilibrium. " + note).strip())
+    wrong = [str(i + 1) for i, ok in enumerate(consistent) if not ok]
+    msg = (f"equation(s) {', '.join(wrong)} do not agree with the linearized equations of motion about "
+           f"equilibrium" if wrong else f"your equations determine only {rank} of the {n} accelerations")
+    return graded(part, fraction, "numeric", "Incorrect: " + msg + ".")
+
+
+# ----------------------------------------------------------------------------- the Hamiltonian
+
+
+def _hamilton_points(ctx: Context, mech: Mechanics, part: Part):
+    pts, groups, per = _grouped_points(ctx, mech, part)
+    q, qd, t, params = state_arrays(mech, pts)
+    p = mech.momenta(q, qd, t, params)
+    for sym, v in zip(mech.s.p, p):
+        pts.values[sym] = v
+    return pts, groups, per, (q, p, t, params)
+
+
+def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
+    mech = ctx.mech(part)
+    H_s = read_expr(value, part, mech, plain_coordinates=True, momenta=True, max_order=0
+                    ) if not _has_velocity(value, mech) else None
+    if H_s is None:
+        return graded(part, 0.0, "exact", "Incorrect: H must be written in the coordinates and the momenta "
+                      f"({', '.join(str(p) for p in mech.s.p)}), not in the velocities: "
+                      "use p = dL/dq' to eliminate the velocities.")
+    pts, groups, per, (q, p, t, params) = _hamilton_points(ctx, mech, part)
+    extra = [sp.Symbol(s) for s in part.symbols]
+    args = [*mech.s.q, *mech.s.p, T, *mech.params, *extra]
+    h_s = compile_exprs([H_s], args)(*pts.args(args))[0]
+    h_r = mech.hamiltonian(q, p, t, params)
+    diff = h_s - h_r
+    tol = 1e-8 * scale_of(h_s, h_r)
+    same = all(np.all(np.abs(diff[g * per:(g + 1) * per] - diff[g * per]) <= tol) for g in range(groups))
+
+    def student_rates(q_, p_, t_, params_, extra_):
+        return _hamiltonian_rates(H_s, mech, part)(q_, p_, t_, params_, extra_)
+
+    if same:
+        proof = None
+        try:
+            with time_bound(ctx.symbolic_seconds):
+                H_ref = mech.hamiltonian_symbolic
+            d = H_s - H_ref
+            proof = proves_all_zero([sp.diff(d, v) for v in [*mech.s.q, *mech.s.p]],
+                                    ctx.symbolic_seconds, ctx.positive)
+        except _OutOfTime:
+            proof = None
+        note = "" if np.all(np.abs(diff) <= tol) else "It differs from the usual H by a function of t only."
+        traj = None if proof else _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
+        return _decide(part, proof, traj, note)
+    message = _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, (q, p, t, params))
+    traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
+    return _wrong(part, 0.0, message, traj)
+
+
+def _has_velocity(value: object, mech: Mechanics) -> bool:
+    if not isinstance(value, sp.Basic):
+        return False
+    return any(isinstance(d, sp.Derivative) for d in value.atoms(sp.Derivative)) or any(
+        s.name in {f"{n}_d" for n in mech.names} | {f"{n}dot" for n in mech.names} for s in value.free_symbols
+        if isinstance(s, sp.Symbol))
+
+
+def _hamiltonian_rates(H: sp.Expr, mech: Mechanics, part: Part):
+    extra = [sp.Symbol(s) for s in part.symbols]
+    args = [*mech.s.q, *mech.s.p, T, *mech.params, *extra]
+    dq = compile_exprs([sp.diff(H, p) for p in mech.s.p], args)
+    dp = compile_exprs([-sp.diff(H, q) for q in mech.s.q], args)
+    Q = compile_exprs(mech.Q, [*mech.s.q, *mech.s.qd, T, *mech.params]) if any(x != 0 for x in mech.Q) else None
+
+    def rates(q, p, t, params, extra_v):
+        qd = dq(*q, *p, t, *params, *extra_v)
+        pd = dp(*q, *p, t, *params, *extra_v)
+        if Q is not None:
+            pd = pd + Q(*q, *qd, t, *params)
+        return np.concatenate([qd, pd])
+
+    return rates
+
+
+def _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, state) -> str:
+    q, p, t, params = state
+    extra = [sp.Symbol(s) for s in part.symbols]
+    args = [*mech.s.q, *mech.s.p, T, *mech.params, *extra]
+    tol = 1e-8 * scale_of(h_s)
+
+    def matches(values):
+        d = h_s - values
+        return all(np.all(np.abs(d[g * per:(g + 1) * per] - d[g * per]) <= tol) for g in range(groups))
+
+    for mistake in part.mistakes:
+        try:
+            H_m = mech.parse(str(mistake.answer), [*part.symbols, *(str(x) for x in mech.s.p)])
+            if matches(compile_exprs([H_m], args)(*pts.args(args))[0]):
+                return mistake.message
+        except Exception:  # noqa: BLE001
+            continue
+    qd = mech.velocities(q, p, t, params)
+    kin, pot = split_energy(mech.L, mech)
+    E = compile_exprs([kin + pot], [*mech.s.q, *mech.s.qd, T, *mech.params])(*q, *qd, t, *params)[0]
+    if matches(E):
+        return ("Incorrect: this is T + V, the energy, but here H is not the energy: the Hamiltonian is "
+                "sum(p q') - L written in the momenta.")
+    return "Incorrect: H(q, p) differs from the Hamiltonian of this system (check the momenta p = dL/dq')."
+
+
+# ----------------------------------------------------------------------------- Hamilton's equations
+
+
+def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
+    mech = ctx.mech(part)
+    rows = [read_sympy(r, part, mech, plain_coordinates=True, momenta=True, max_order=1)
+            for r in equation_rows(value, part)]
+    unknowns = [*mech.s.qd, *mech.s.pd]
+    if any(r.has(a) for r in rows for a in mech.s.qdd):
+        raise InvalidAnswer(f"{part.name} should be first-order equations for q' and p'; found a second derivative")
+    pts, groups, per, (q, p, t, params) = _hamilton_points(ctx, mech, part)
+    extra = [sp.Symbol(s) for s in part.symbols]
+    args = [*mech.s.q, *mech.s.p, T, *mech.params, *extra]
+    truth = mech.hamilton_rates(q, p, t, params)
+    compiled = CompiledRows(rows, unknowns, args)
+    labels = [*(f"{x}'" for x in mech.names), *(f"p_{x}'" for x in mech.names)]
+    an = analyse_rows(compiled, pts.args(args), truth, labels)
+
+    def student_rates(q_, p_, t_, params_, extra_v):
+        return compiled.solve([*q_, *p_, t_, *params_, *extra_v])
+
+    if an.fraction >= 1.0:
+        traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
+        return _decide(part, None, traj)
+    problems = [f"equation {i + 1} (for {an.labels[i]}) does not hold for the true motion" for i in an.wrong]
+    if an.rank < an.n and not an.wrong:
+        problems.append(f"your equations determine only {an.rank} of the {an.n} rates "
+                        f"({', '.join(labels)}): Hamilton's equations are 2n first-order equations")
+    traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates)) if len(rows) >= an.n else None
+    return _wrong(part, an.fraction, _sentence(problems), traj)

@@ -1,0 +1,112 @@
+"""Checkers about the motion itself: conserved quantities and closed-form trajectories."""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from lagrade.checkers.base import Context, InvalidAnswer, graded, key_name, read_sympy, as_expr
+from lagrade.numeric import compile_exprs
+from lagrade.reference import Mechanics, total_derivative
+from lagrade.result import PartResult
+from lagrade.sampling import rng_for, sample_points, with_reference_dynamics
+from lagrade.spec import Part
+from lagrade.symbols import T
+
+
+def _in_velocities(expr: sp.Expr, mech: Mechanics) -> sp.Expr:
+    """Momenta p_q written by the student mean dL/dq' of this system."""
+    subs = {p: sp.diff(mech.L, v) for p, v in zip(mech.s.p, mech.s.qd)}
+    return expr.xreplace(subs)
+
+
+def check_conserved(ctx: Context, part: Part, value: object) -> PartResult:
+    """Each quantity must be constant along the true motion and the expected ones must be among them.
+
+    "Among them" means functional dependence: the gradient of each expected quantity lies in the
+    span of the gradients of the student's (so 2*p_phi, or E + p_phi, count).
+    """
+    mech = ctx.mech(part)
+    items = list(value) if isinstance(value, (list, tuple)) else [value]
+    extra = [f"p_{n}" for n in mech.names]
+    studs = [_in_velocities(read_sympy(as_expr(v, part), part, mech, plain_coordinates=True, extra=extra,
+                                       max_order=1), mech) for v in items]
+    refs = [_in_velocities(mech.parse(str(r), extra), mech) for r in part.reference]
+    pts = with_reference_dynamics(mech, sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name)))
+    state = [*mech.s.q, *mech.s.qd]
+    args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *mech.params]
+    argv = pts.args(args)
+
+    def rate_and_grad(exprs):
+        rates = compile_exprs([total_derivative(e, mech.s) for e in exprs], args)(*argv)
+        grads = compile_exprs([sp.diff(e, v) for e in exprs for v in state], args)(*argv)
+        return rates, grads.reshape(len(exprs), len(state), pts.K)
+
+    s_rate, s_grad = rate_and_grad(studs)
+    r_rate, r_grad = rate_and_grad(refs)
+    notes, good = [], []
+    for i, (rate, grad) in enumerate(zip(s_rate, s_grad), 1):
+        scale = max(float(np.nanmax(np.abs(grad))) if grad.size else 0.0, 1.0)
+        if not np.all(np.isfinite(rate)) or np.abs(rate).max() > 1e-7 * scale * 10:
+            notes.append(f"quantity {i} is not conserved")
+        elif np.abs(grad).max() <= 1e-12:
+            notes.append(f"quantity {i} is a constant, which says nothing")
+        else:
+            good.append(i - 1)
+    covered = 0
+    for j in range(len(refs)):
+        ok = bool(good)
+        for k in range(pts.K) if good else []:
+            A = s_grad[good, :, k].T
+            b = r_grad[j, :, k]
+            coef, *_ = np.linalg.lstsq(A, b, rcond=None)
+            if np.abs(A @ coef - b).max() > 1e-7 * max(np.abs(b).max(), 1.0):
+                ok = False
+                break
+        covered += ok
+    fraction = max(covered - (len(items) - len(good)), 0) / len(refs)
+    if covered < len(refs):
+        notes.append(f"{len(refs) - covered} of the {len(refs)} conserved quantities of this motion "
+                     f"{'is' if len(refs) - covered == 1 else 'are'} missing")
+    return graded(part, fraction, "numeric", "correct." if not notes else "Incorrect: " + "; ".join(notes) + ".")
+
+
+def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:
+    """q(t) in closed form: it must satisfy the equations of motion and the stated initial values."""
+    mech = ctx.mech(part)
+    if not isinstance(value, dict):
+        raise InvalidAnswer(f"{part.name} should be a dict coordinate -> expression in t")
+    given = {key_name(k): v for k, v in value.items()}
+    missing = [n for n in mech.names if n not in given]
+    if missing:
+        raise InvalidAnswer(f"{part.name} is missing {', '.join(missing)}")
+    sol = {}
+    for name in mech.names:
+        e = as_expr(given[name], part)
+        sol[name] = read_sympy(e, part, mech, plain_coordinates=False, max_order=0)
+    subs = {}
+    for name, q, qd, qdd in zip(mech.names, mech.s.q, mech.s.qd, mech.s.qdd):
+        subs[q], subs[qd], subs[qdd] = sol[name], sp.diff(sol[name], T), sp.diff(sol[name], T, 2)
+    residuals = [e.xreplace(subs) for e in mech.EL]
+    pts = sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name), extra=part.symbols)
+    args = [T, *mech.params, *(sp.Symbol(s) for s in part.symbols)]
+    argv = pts.args(args)
+    res = compile_exprs(residuals, args)(*argv)
+    scale = compile_exprs([sp.Add(*[abs(term) for term in sp.Add.make_args(sp.expand(e))]) for e in residuals],
+                          args)(*argv)
+    notes = []
+    if not np.all(np.abs(res) <= 1e-7 * np.maximum(scale, 1e-12)):
+        notes.append("it does not satisfy the equation of motion")
+    for key, text in part.initial.items():
+        want = mech.parse(text, part.symbols)
+        name = key[:-2] if key.endswith("_d") else key
+        if name not in sol:
+            continue
+        have = sol[name] if key == name else sp.diff(sol[name], T)
+        a = compile_exprs([have.subs(T, 0)], args)(*argv)[0]
+        b = compile_exprs([want], args)(*argv)[0]
+        if not np.allclose(a, b, rtol=1e-8, atol=1e-10):
+            notes.append(f"it does not meet the initial condition for {name}{chr(39) if key != name else ''}(0)")
+    if notes:
+        return graded(part, 0.0, "numeric", "Incorrect: " + "; ".join(notes) + ".")
+    return graded(part, 1.0, "numeric", "correct: satisfies the equation of motion and the initial conditions.")

@@ -1,0 +1,103 @@
+"""Does a set of equations define the same rates as the reference?
+
+Students write equations of motion (and Hamilton's equations) in any order, on either side, with
+any nonzero factor, or as combinations of each other. What must hold is that each equation is
+satisfied by the true rates at every state, and that together they determine all of them. Both
+are checked numerically at sampled states: the rows are evaluated at the reference rates
+(residual ~ 0) and their Jacobian in the unknown rates gives the rank. No symbolic solve.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from lagrade.numeric import compile_exprs
+
+
+@dataclass
+class RowAnalysis:
+    consistent: list[bool]
+    trivial: list[bool]
+    rank: int
+    n: int
+    labels: list[str]  # the unknown each row mainly determines
+
+    @property
+    def wrong(self) -> list[int]:
+        return [i for i, ok in enumerate(self.consistent) if not ok]
+
+    @property
+    def fraction(self) -> float:
+        counted = sum(1 for t in self.trivial if not t)
+        if not self.wrong and self.rank >= self.n:
+            return 1.0
+        return self.rank / max(self.n, counted)
+
+
+class CompiledRows:
+    """Rows G(args, u) and their Jacobian in the unknowns u, compiled once."""
+
+    def __init__(self, rows: Sequence[sp.Expr], unknowns: Sequence[sp.Symbol], args: Sequence[sp.Symbol]):
+        self.m, self.n = len(rows), len(unknowns)
+        self.unknowns = list(unknowns)
+        allargs = [*args, *unknowns]
+        self.G = compile_exprs(list(rows), allargs)
+        self.J = compile_exprs([sp.diff(r, u) for r in rows for u in unknowns], allargs)
+        self.linear = all(sp.diff(r, u, v) == 0 for r in rows for u in unknowns for v in unknowns)
+
+    def jacobian(self, argv: Sequence[np.ndarray], u: np.ndarray) -> np.ndarray:
+        K = np.broadcast(*argv).size
+        return self.J(*argv, *u).reshape(self.m, self.n, K)
+
+    def solve(self, argv: Sequence[np.ndarray]) -> np.ndarray:
+        """The rates these rows define (linear rows: one solve; otherwise two Newton steps)."""
+        K = np.broadcast(*argv).size
+        u = np.zeros((self.n, K))
+        for _ in range(1 if self.linear else 3):
+            J = self.jacobian(argv, u).transpose(2, 0, 1)
+            g = self.G(*argv, *u).T[..., None]
+            with np.errstate(all="ignore"):
+                try:
+                    step = (np.linalg.solve(J, g) if self.m == self.n else np.linalg.pinv(J) @ g)[..., 0].T
+                except np.linalg.LinAlgError:
+                    return np.full((self.n, K), np.nan)
+            u = u - step
+        return u
+
+
+def analyse_rows(rows: CompiledRows, argv: Sequence[np.ndarray], truth: np.ndarray, labels: Sequence[str],
+                 rtol: float = 1e-7) -> RowAnalysis:
+    """Which rows hold at the true rates, which are empty, and how many unknowns they fix."""
+    zero = np.zeros_like(truth)
+    g_true = rows.G(*argv, *truth)
+    g_zero = rows.G(*argv, *zero)
+    J = rows.jacobian(argv, truth)  # (m, n, K)
+    terms = np.abs(g_zero) + np.einsum("mnk,nk->mk", np.abs(J), np.abs(truth))
+    scale = np.nanmax(np.where(np.isfinite(terms), terms, np.nan), axis=1, initial=0.0)
+    scale = np.where(scale > 0, scale, 1.0)
+    consistent, trivial, main = [], [], []
+    for i in range(rows.m):
+        ok = bool(np.all(np.abs(g_true[i]) <= rtol * scale[i]))
+        jnorm = np.abs(J[i])
+        empty = bool(np.all(jnorm <= 1e-12 * scale[i]))
+        consistent.append(ok)
+        trivial.append(ok and empty)
+        weight = np.nanmedian(jnorm * (1.0 + np.abs(truth)), axis=1) if J.shape[2] else np.zeros(rows.n)
+        main.append(labels[int(np.nanargmax(weight))] if np.isfinite(weight).any() and weight.max() > 0 else "none")
+    use = [i for i in range(rows.m) if consistent[i] and not trivial[i]]
+    if use:
+        sub = J[use].transpose(2, 0, 1)  # (K, r, n)
+        ranks = []
+        for Jk in sub:
+            if not np.all(np.isfinite(Jk)):
+                continue
+            s = np.linalg.svd(Jk, compute_uv=False)
+            ranks.append(int(np.sum(s > 1e-9 * max(s.max(initial=0.0), 1e-300))))
+        rank = min(ranks) if ranks else 0
+    else:
+        rank = 0
+    return RowAnalysis(consistent, trivial, rank, rows.n, main)

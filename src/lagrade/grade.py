@@ -1,0 +1,79 @@
+"""Grading one answer: every part, each by its checker, into one result.
+
+Nothing a student writes may stop the grading of the other parts: a part that cannot be read is
+``invalid`` with the reason, a part not given is ``missing``, and an unexpected failure of the
+engine on one part is reported on that part (as a grader error) instead of crashing the run.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from lagrade.answers.load import LoadedAnswer, load_answer
+from lagrade.checkers import CHECKERS, Context, InvalidAnswer
+from lagrade.compare.trajectory import ACCURACY
+from lagrade.library import load_problem
+from lagrade.reference import ReferenceCache, SceneError
+from lagrade.result import CheckResult, PartResult
+from lagrade.spec import Problem
+
+_REFERENCES: dict[int, ReferenceCache] = {}
+
+
+def references(problem: Problem) -> ReferenceCache:
+    """Reference derivations are made once per problem per process, not once per answer."""
+    key = id(problem)
+    if key not in _REFERENCES:
+        _REFERENCES[key] = ReferenceCache(problem)
+    return _REFERENCES[key]
+
+
+def _unusable(part, verdict: str, feedback: str) -> PartResult:
+    return PartResult(part=part.name, verdict=verdict, score=0.0, max_score=part.weight, method="exact",
+                      feedback=feedback)
+
+
+def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "default",
+                 only: list[str] | None = None) -> CheckResult:
+    ctx = Context(problem, references(problem), ACCURACY[accuracy])
+    parts = []
+    for part in problem.parts:
+        if only and part.name not in only:
+            continue
+        if part.name in answer.part_problems:
+            parts.append(_unusable(part, "invalid", str(answer.part_problems[part.name])))
+            continue
+        if part.name not in answer.values:
+            if answer.fatal is not None:
+                parts.append(_unusable(part, "invalid", f"not graded: {answer.fatal}"))
+            else:
+                parts.append(_unusable(part, "missing", f"no value bound to '{part.name}'"))
+            continue
+        try:
+            parts.append(CHECKERS[part.kind](ctx, part, answer.values[part.name]))
+        except InvalidAnswer as exc:
+            parts.append(_unusable(part, "invalid", str(exc)))
+        except SceneError:
+            raise
+        except Exception as exc:  # noqa: BLE001  (a grader bug must not sink the other parts)
+            if os.environ.get("LAGRADE_DEBUG"):
+                raise
+            parts.append(_unusable(part, "invalid", f"lagrade could not grade this part ({type(exc).__name__}: "
+                                                    f"{exc}); please report it to your instructor"))
+    return CheckResult(problem=problem.id, score=round(sum(p.score for p in parts), 6),
+                       max_score=sum(p.max_score for p in parts), parts=parts,
+                       problems=[str(p) for p in answer.problems])
+
+
+def check(problem: str | Problem, answer: str | Path | None = None, *, accuracy: str = "default",
+          limits=None, **parts: object) -> CheckResult:
+    """Grade an answer file, or parts given directly as sympy objects (``check("12.43", H=...)``)."""
+    prob = problem if isinstance(problem, Problem) else load_problem(problem)
+    loaded = load_answer(Path(answer), prob, limits) if answer is not None else LoadedAnswer()
+    for name, value in parts.items():
+        try:
+            loaded.values[prob.part(name).name] = value
+        except KeyError:
+            raise TypeError(f"problem {prob.id} has no part '{name}'") from None
+    return grade_values(prob, loaded, accuracy)

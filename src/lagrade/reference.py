@@ -1,0 +1,202 @@
+"""Reference derivation: from a scene (L or T and V, forces, constraints) to its dynamics.
+
+Everything the grader compares against is derived here from the problem file, never typed in
+by hand: Lagrange's equations as a mass matrix and a force vector (``M qdd = f``), the momenta,
+the Hamiltonian by Legendre transform, and the multipliers of the constraints. Numerical forms
+are compiled once; symbolic closed forms (which can be slow) are built only when asked for.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from functools import cached_property
+
+import numpy as np
+import sympy as sp
+
+from lagrade.answers.text import parse_math
+from lagrade.numeric import Vectorized, compile_exprs
+from lagrade.spec import Problem, System
+from lagrade.symbols import T, StateSymbols, to_state
+
+
+class SceneError(ValueError):
+    """A scene whose expressions do not make a usable mechanical system."""
+
+
+def total_derivative(expr: sp.Expr, s: StateSymbols) -> sp.Expr:
+    """d/dt of a function of (q, qd, t), introducing qdd: the chain rule, without sympy Functions."""
+    out = sp.diff(expr, T)
+    for q, qd, qdd in zip(s.q, s.qd, s.qdd):
+        out += sp.diff(expr, q) * qd + sp.diff(expr, qd) * qdd
+    return out
+
+
+def euler_lagrange(L: sp.Expr, s: StateSymbols) -> list[sp.Expr]:
+    """d/dt dL/dqd - dL/dq for each coordinate."""
+    return [total_derivative(sp.diff(L, qd), s) - sp.diff(L, q) for q, qd in zip(s.q, s.qd)]
+
+
+class Mechanics:
+    """The dynamics of one system of a problem, in plain state symbols."""
+
+    def __init__(self, problem: Problem, system: System):
+        self.problem = problem
+        self.system = system
+        self.all_names = tuple(c.name for c in system.coordinates)
+        self.names = tuple(c.name for c in system.free_coordinates)
+        self.full = StateSymbols(self.all_names)
+        self.s = StateSymbols(self.names)
+        self.params = [sp.Symbol(p.name) for p in problem.parameters]
+        self.multipliers = [sp.Symbol(c.multiplier) for c in system.constraints if c.multiplier]
+        known = [p.name for p in problem.parameters]
+        parse = lambda text, what: self._parse(text, what, known)  # noqa: E731
+
+        if system.L is not None:
+            L_full = parse(system.L, "L")
+        else:
+            L_full = parse(system.T, "T") - (parse(system.V, "V") if system.V else 0)
+        Q_full = {n: parse(system.Q.get(n, "0"), f"Q.{n}") for n in self.all_names}
+
+        # Constraint c = v(other q, t): substitute c, c_d, c_dd everywhere.
+        fixed: dict[sp.Symbol, sp.Expr] = {}
+        for c in system.constraints:
+            value = parse(c.value, f"constraint on {c.coordinate}")
+            if value.free_symbols & {sp.Symbol(k.coordinate) for k in system.constraints}:
+                raise SceneError(f"constraint on {c.coordinate} must not depend on another constrained coordinate")
+            v_d = total_derivative(value, self.s)
+            fixed[sp.Symbol(c.coordinate)] = value
+            fixed[sp.Symbol(f"{c.coordinate}_d")] = v_d
+            fixed[sp.Symbol(f"{c.coordinate}_dd")] = total_derivative(v_d, self.s)
+        self.constrained = fixed
+        self.L_full = L_full
+        self.L = sp.expand(L_full.xreplace(fixed)) if fixed else L_full
+        # Generalized forces pull back through the constraints by virtual work.
+        self.Q = []
+        for q, name in zip(self.s.q, self.names):
+            total = Q_full[name]
+            for c in system.constraints:
+                total += Q_full[c.coordinate] * sp.diff(fixed[sp.Symbol(c.coordinate)], q)
+            self.Q.append(total.xreplace(fixed) if fixed else total)
+        # Multipliers: the constrained coordinate's own Lagrange equation, on the constrained motion.
+        full_el = dict(zip(self.all_names, euler_lagrange(L_full, self.full)))
+        self.multiplier_exprs = {
+            sp.Symbol(c.multiplier): (full_el[c.coordinate] - Q_full[c.coordinate]).xreplace(fixed)
+            for c in system.constraints if c.multiplier
+        }
+        self.EL = [e - Qi for e, Qi in zip(euler_lagrange(self.L, self.s), self.Q)]
+        self.mass = sp.Matrix([[sp.diff(e, a) for a in self.s.qdd] for e in self.EL])
+        zero_acc = {a: 0 for a in self.s.qdd}
+        self.force = [-e.xreplace(zero_acc) for e in self.EL]
+        if any(self.mass.has(a) for a in self.s.qdd):
+            raise SceneError("Lagrange's equations are not linear in the accelerations")
+
+    def _parse(self, text: str, what: str, params: Sequence[str]) -> sp.Expr:
+        extra = [c.multiplier for c in self.system.constraints if c.multiplier]
+        try:
+            expr = parse_math(text, list(self.all_names), known_names=[*params, *extra, "t"])
+            return sp.sympify(to_state(expr, self.all_names))
+        except Exception as exc:  # a one-line reason naming the field
+            raise SceneError(f"system '{self.system.key}', {what}: {exc}") from None
+
+    def parse(self, text: str, extra: Sequence[str] = ()) -> sp.Expr:
+        """Parse a reference expression of this system (may use ``q_dd`` and multipliers)."""
+        return self._parse(text, "reference", [p.name for p in self.problem.parameters] + list(extra))
+
+    # ----- numerical forms ---------------------------------------------------------------
+    @property
+    def args(self) -> list[sp.Symbol]:
+        """Argument order of every compiled function: q, qd, t, parameters."""
+        return [*self.s.q, *self.s.qd, T, *self.params]
+
+    @cached_property
+    def _mass_f(self) -> Vectorized:
+        return compile_exprs(list(self.mass), self.args)
+
+    @cached_property
+    def _force_f(self) -> Vectorized:
+        return compile_exprs(self.force, self.args)
+
+    def accelerations(self, q: np.ndarray, qd: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
+        """qdd for a batch of states: shapes (n, K) -> (n, K), by batched LU solves."""
+        n, K = q.shape
+        argv = [*q, *qd, t, *params]
+        M = self._mass_f(*argv).reshape(n, n, K).transpose(2, 0, 1)
+        f = self._force_f(*argv).T[..., None]
+        with np.errstate(all="ignore"):
+            try:
+                return np.linalg.solve(M, f)[..., 0].T
+            except np.linalg.LinAlgError:
+                return np.full((n, K), np.nan)
+
+    @cached_property
+    def _momentum_f(self) -> Vectorized:
+        return compile_exprs([sp.diff(self.L, v) for v in self.s.qd], self.args)
+
+    def momenta(self, q: np.ndarray, qd: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
+        return self._momentum_f(*q, *qd, t, *params)
+
+    @cached_property
+    def _lagrangian_f(self) -> Vectorized:
+        return compile_exprs([self.L], self.args)
+
+    @cached_property
+    def _dLdq_f(self) -> Vectorized:
+        return compile_exprs([sp.diff(self.L, q) + Qi for q, Qi in zip(self.s.q, self.Q)], self.args)
+
+    def velocities(self, q: np.ndarray, p: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
+        """Invert p = dL/dqd numerically (L is quadratic in the velocities)."""
+        n, K = q.shape
+        zero = np.zeros_like(q)
+        argv = [*q, *zero, t, *params]
+        b = self._momentum_f(*argv)
+        M = self._hessian_f(*argv).reshape(n, n, K).transpose(2, 0, 1)
+        with np.errstate(all="ignore"):
+            return np.linalg.solve(M, (p - b).T[..., None])[..., 0].T
+
+    @cached_property
+    def _hessian_f(self) -> Vectorized:
+        return compile_exprs([sp.diff(self.L, a, b) for a in self.s.qd for b in self.s.qd], self.args)
+
+    def hamiltonian(self, q: np.ndarray, p: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
+        """H(q, p, t) = p.qd - L by a numerical Legendre transform: no symbolic inversion needed."""
+        qd = self.velocities(q, p, t, params)
+        return (p * qd).sum(axis=0) - self._lagrangian_f(*q, *qd, t, *params)[0]
+
+    def hamilton_rates(self, q: np.ndarray, p: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
+        """(q', p') of Hamilton's equations, using dH/dq|p = -dL/dq|qd."""
+        qd = self.velocities(q, p, t, params)
+        pd = self._dLdq_f(*q, *qd, t, *params)
+        return np.concatenate([qd, pd])
+
+    @cached_property
+    def is_quadratic_in_velocities(self) -> bool:
+        return all(sp.diff(self.L, a, b, c) == 0 for a in self.s.qd for b in self.s.qd for c in self.s.qd)
+
+    # ----- symbolic forms (slower; built on demand) ----------------------------------------
+    @cached_property
+    def accelerations_symbolic(self) -> list[sp.Expr]:
+        sol = self.mass.LUsolve(sp.Matrix(self.force))
+        return [sp.cancel(sp.together(e)) for e in sol]
+
+    @cached_property
+    def hamiltonian_symbolic(self) -> sp.Expr:
+        zero = {v: 0 for v in self.s.qd}
+        b = sp.Matrix([sp.diff(self.L, v).xreplace(zero) for v in self.s.qd])
+        M = sp.Matrix([[sp.diff(self.L, a, c) for c in self.s.qd] for a in self.s.qd])
+        qd = M.LUsolve(sp.Matrix(self.s.p) - b)
+        H = sum(pi * v for pi, v in zip(self.s.p, qd)) - self.L.xreplace(dict(zip(self.s.qd, qd)))
+        return sp.cancel(sp.together(sp.expand(H)))
+
+
+class ReferenceCache:
+    """One `Mechanics` per system of a problem, derived once and reused by every part."""
+
+    def __init__(self, problem: Problem):
+        self.problem = problem
+        self._systems: dict[str, Mechanics] = {}
+
+    def __getitem__(self, key: str) -> Mechanics:
+        if key not in self._systems:
+            self._systems[key] = Mechanics(self.problem, self.problem.system(key))
+        return self._systems[key]

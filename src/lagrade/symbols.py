@@ -1,0 +1,93 @@
+"""One naming of state variables shared by the reference and every student answer.
+
+Students write coordinates as functions of time (``theta(t)``, ``theta(t).diff(t)``); the engine
+works with plain symbols (``theta``, ``theta_d``, ``theta_dd``, ``p_theta``) so that expressions
+can be differentiated as ordinary functions of the state and compiled for numpy.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+T = sp.Symbol("t")
+
+
+class NotationError(ValueError):
+    """An expression uses a name or a form the problem does not know."""
+
+
+@dataclass(frozen=True)
+class StateSymbols:
+    """Plain symbols for the coordinates of one system, their rates and momenta."""
+
+    names: tuple[str, ...]
+
+    @property
+    def q(self) -> list[sp.Symbol]:
+        return [sp.Symbol(n) for n in self.names]
+
+    @property
+    def qd(self) -> list[sp.Symbol]:
+        return [sp.Symbol(f"{n}_d") for n in self.names]
+
+    @property
+    def qdd(self) -> list[sp.Symbol]:
+        return [sp.Symbol(f"{n}_dd") for n in self.names]
+
+    @property
+    def p(self) -> list[sp.Symbol]:
+        return [sp.Symbol(f"p_{n}") for n in self.names]
+
+    @property
+    def pd(self) -> list[sp.Symbol]:
+        return [sp.Symbol(f"p_{n}_d") for n in self.names]
+
+    def functions(self) -> list[sp.Expr]:
+        return [sp.Function(n)(T) for n in self.names]
+
+
+def plain_symbols(expr: sp.Basic) -> sp.Basic:
+    """Drop assumptions: parameters are matched by name, whatever the student assumed."""
+    mapping = {s: sp.Symbol(s.name) for s in expr.free_symbols if isinstance(s, sp.Symbol) and s.assumptions0}
+    return expr.xreplace(mapping) if mapping else expr
+
+
+def to_state(expr: sp.Basic, names: Sequence[str], max_order: int = 2, momenta_too: bool = False) -> sp.Basic:
+    """Replace ``q(t)`` and its derivatives by ``q``, ``q_d``, ``q_dd``.
+
+    With ``momenta_too`` the same is done for ``p_q(t)`` (Hamilton's equations use ``p_q_d``).
+    Raises `NotationError` for unknown functions or derivatives of too high an order.
+    """
+    expr = plain_symbols(sp.sympify(expr))
+    known = set(names) | ({f"p_{n}" for n in names} if momenta_too else set())
+    mapping: dict[sp.Basic, sp.Basic] = {}
+    for d in expr.atoms(sp.Derivative):
+        f = d.expr
+        if not (isinstance(f, AppliedUndef) and f.args == (T,) and f.func.__name__ in known):
+            raise NotationError(f"cannot read the derivative {d}: differentiate a coordinate, as {names[0]}(t).diff(t)"
+                                if names else f"cannot read the derivative {d}")
+        if any(v != T for v, _ in d.variable_count):
+            raise NotationError(f"{d} differentiates with respect to something other than time t")
+        order = sum(c for _, c in d.variable_count)
+        if order > max_order:
+            raise NotationError(f"{d} is a derivative of order {order}; at most {max_order} is expected here")
+        mapping[d] = sp.Symbol(f.func.__name__ + ("_d" if order == 1 else "_dd"))
+    expr = expr.xreplace(mapping) if mapping else expr
+    funcs = {}
+    for f in expr.atoms(AppliedUndef):
+        name = f.func.__name__
+        if name in known and f.args == (T,):
+            funcs[f] = sp.Symbol(name)
+        else:
+            raise NotationError(f"unknown function {f}; coordinates are {', '.join(f'{n}(t)' for n in names)}")
+    return expr.xreplace(funcs) if funcs else expr
+
+
+def unknown_names(expr: sp.Basic, allowed: Iterable[str]) -> list[str]:
+    """Free symbol names of ``expr`` that the problem does not define, sorted."""
+    allowed = set(allowed)
+    return sorted({s.name for s in expr.free_symbols if isinstance(s, sp.Symbol)} - allowed)
