@@ -249,6 +249,12 @@ def _matrix(rows: Any) -> sp.ImmutableMatrix:
     return sp.ImmutableMatrix(rows)
 
 
+def _unevaluated(relation: Any):
+    def build(lhs: Any, rhs: Any) -> Any:
+        return relation(lhs, rhs, evaluate=False)
+    return build
+
+
 def _const(value: Any):
     return lambda: value
 
@@ -257,8 +263,11 @@ _CONSTRUCTORS: dict[str, Any] = {
     "Symbol": _symbol, "Dummy": _dummy, "Function": _function,
     "Integer": _integer, "Rational": _rational, "Float": _float, "Pow": _pow,
     "Add": sp.Add, "Mul": sp.Mul, "Derivative": _derivative, "Tuple": sp.Tuple,
-    "Equality": sp.Eq, "Eq": sp.Eq, "Unequality": sp.Ne, "Ne": sp.Ne,
-    "StrictLessThan": sp.Lt, "StrictGreaterThan": sp.Gt, "LessThan": sp.Le, "GreaterThan": sp.Ge,
+    # relations are rebuilt as written: srepr shows them after the student's own evaluation
+    "Equality": _unevaluated(sp.Eq), "Eq": _unevaluated(sp.Eq), "Unequality": _unevaluated(sp.Ne),
+    "Ne": _unevaluated(sp.Ne), "StrictLessThan": _unevaluated(sp.Lt),
+    "StrictGreaterThan": _unevaluated(sp.Gt), "LessThan": _unevaluated(sp.Le),
+    "GreaterThan": _unevaluated(sp.Ge),
     "And": sp.And, "Or": sp.Or, "Not": sp.Not,
     "Integral": sp.Integral, "Subs": sp.Subs, "Order": sp.Order,
     "FiniteSet": sp.FiniteSet,

@@ -21,6 +21,7 @@ import math
 import os
 import re
 import resource
+import secrets
 import selectors
 import shutil
 import signal
@@ -79,6 +80,7 @@ class _ChildReport(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
 
+    token: str
     status: Literal["ok", "error", "timeout", "memory"]
     values: dict[str, EncodedValue]
     problems: list[AnswerProblem]
@@ -132,13 +134,14 @@ def _prepare_parent() -> None:
 
 def _run_forked(source: str, path: Path, wanted: list[str], limits: SandboxLimits, workdir: str) -> SandboxOutcome:
     name = path.name
+    token = secrets.token_hex(16)  # a report without it was not written by our child code
     result_r, result_w = os.pipe()
     out_r, out_w = os.pipe()
     sys.stdout.flush()
     sys.stderr.flush()
     pid = os.fork()
     if pid == 0:  # child: never returns
-        _child_main(source, str(path), name, wanted, limits, workdir, result_w, out_w)
+        _child_main(source, str(path), name, wanted, limits, workdir, result_w, out_w, token)
     os.close(result_w)
     os.close(out_w)
 
@@ -184,6 +187,8 @@ def _run_forked(source: str, path: Path, wanted: list[str], limits: SandboxLimit
         return outcome("crashed", f"the Python process running the answer crashed ({signal.Signals(sig).name})")
     try:
         report = _ChildReport.model_validate(json.loads(bytes(result).decode("utf-8")))
+        if not secrets.compare_digest(report.token, token):
+            raise ValueError("forged report")
     except (ValueError, RecursionError, ValidationError, UnicodeDecodeError):
         code = os.WEXITSTATUS(exit_status) if os.WIFEXITED(exit_status) else -1
         return outcome("crashed", f"the answer could not be run (the sandbox stopped with code {code} and no result)")
@@ -222,7 +227,7 @@ class _CpuLimit(BaseException):
 
 
 def _child_main(source: str, code_path: str, name: str, wanted: list[str], limits: SandboxLimits,
-                workdir: str, result_w: int, out_w: int) -> None:
+                workdir: str, result_w: int, out_w: int, token: str) -> None:
     code = 70
     try:
         os.setsid()
@@ -239,7 +244,7 @@ def _child_main(source: str, code_path: str, name: str, wanted: list[str], limit
         _set_limits(limits)
         _drop_privileges(workdir, readable)
         compiled = compile(source, code_path, "exec", dont_inherit=True)
-        report = _execute(compiled, code_path, name, wanted, limits, readable)
+        report = _execute(compiled, code_path, name, wanted, limits, readable, token)
         _write_all(_RESULT_FD, report)
         code = 0
     except BaseException as exc:  # noqa: BLE001 - reported as a crash by the parent
@@ -634,7 +639,7 @@ def _guard_string_parsing(policy: _AuditPolicy, code_path: str) -> None:
 
 
 def _execute(code: types.CodeType, code_path: str, name: str, wanted: list[str],
-             limits: SandboxLimits, readable: Sequence[str]) -> bytes:
+             limits: SandboxLimits, readable: Sequence[str], token: str) -> bytes:
     import traceback
 
     policy = _AuditPolicy(code, code_path, readable)
@@ -675,7 +680,7 @@ def _execute(code: types.CodeType, code_path: str, name: str, wanted: list[str],
             continue
         budget -= len(encoded)
         values[key] = json.loads(encoded)
-    return json.dumps({"status": status, "values": values, "problems": problems}).encode("utf-8")
+    return json.dumps({"token": token, "status": status, "values": values, "problems": problems}).encode("utf-8")
 
 
 def _describe(exc: BaseException, limits: SandboxLimits) -> tuple[str, str]:

@@ -35,6 +35,7 @@ FORBIDDEN_NAMES = frozenset({
     "sympify", "parse_expr", "lambdify", "preview", "init_session", "init_printing",
     "sys", "os", "subprocess", "builtins", "importlib", "import_module", "ctypes",
     "var",  # sympy.var injects names through frame introspection
+    "pager_print", "print_gtk", "plot", "plot_implicit", "plot_parametric", "plotting",
 })
 
 #: Attributes (``x.attr``) that lead to frames, globals, code objects or other modules.

@@ -1,0 +1,3 @@
+from lagrade.cli import main
+
+main()

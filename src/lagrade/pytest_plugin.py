@@ -1,0 +1,148 @@
+"""A pytest plugin: problem files and answer files are test items.
+
+Instructors test their problems the way this repository tests its own: ``pytest problems
+reference_solutions tests/answers`` collects
+
+- every problem file ``problems/<id>.toml``: it loads, and its scene derives;
+- every reference solution ``reference_solutions/<id>/answer.(py|toml)``: it scores full marks;
+- every golden answer ``answers/<id>/<expected>_<what>.(py|toml)``: ``correct_*`` scores full marks,
+  ``wrong_*`` does not, and a first-line comment ``# expect: L=incorrect, eom=correct`` pins verdicts.
+
+A failure reads like grading feedback (the verdict table), not like a traceback. Problems are
+looked up in the nearest ``problems/`` folder above the answer file, then among the bundled ones.
+Turn the plugin off with ``-p no:lagrade``.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+_EXPECT = re.compile(r"^#\s*expect:\s*(.+)$", re.MULTILINE)
+
+
+class GradingFailure(Exception):
+    """Raised by lagrade items; shown as its message only."""
+
+
+def _problems_dirs(path: Path) -> tuple[Path, ...]:
+    for parent in path.parents:
+        candidate = parent / "problems"
+        if candidate.is_dir() and any(candidate.glob("*.toml")):
+            return (candidate,)
+    return ()
+
+
+def _is_problem_file(path: Path) -> bool:
+    if path.suffix != ".toml" or path.parent.name != "problems":
+        return False
+    head = path.read_text(encoding="utf-8", errors="replace")
+    return "[[parts]]" in head and re.search(r"^id\s*=", head, re.MULTILINE) is not None
+
+
+def _answer_kind(path: Path) -> str | None:
+    if path.suffix not in (".py", ".toml") or len(path.parts) < 3:
+        return None
+    if path.parent.parent.name == "reference_solutions" and path.stem == "answer":
+        return "reference"
+    if path.parent.parent.name == "answers" and re.match(r"^(correct|wrong)_", path.stem):
+        return "golden"
+    return None
+
+
+def pytest_collect_file(file_path: Path, parent):  # noqa: D103
+    if _is_problem_file(file_path):
+        return ProblemFile.from_parent(parent, path=file_path)
+    kind = _answer_kind(file_path)
+    if kind:
+        return AnswerFile.from_parent(parent, path=file_path, kind=kind)
+    return None
+
+
+class ProblemFile(pytest.File):
+    def collect(self):
+        yield ProblemItem.from_parent(self, name=f"problem {self.path.stem}")
+
+
+class ProblemItem(pytest.Item):
+    def runtest(self) -> None:
+        from lagrade.grade import references
+        from lagrade.library import load_problem
+        from lagrade.reference import SceneError
+        from lagrade.spec import SpecError
+
+        try:
+            problem = load_problem(self.path)
+            for system in problem.systems:
+                references(problem)[system.key]
+        except (SpecError, SceneError) as exc:
+            raise GradingFailure(str(exc)) from None
+
+    def repr_failure(self, excinfo):  # noqa: D102
+        if isinstance(excinfo.value, GradingFailure):
+            return str(excinfo.value)
+        return super().repr_failure(excinfo)
+
+    def reportinfo(self):  # noqa: D102
+        return self.path, None, self.name
+
+
+class AnswerFile(pytest.File):
+    def __init__(self, *, kind: str, **kwargs):
+        super().__init__(**kwargs)
+        self.kind = kind
+
+    def collect(self):
+        pid = self.path.parent.name
+        yield AnswerItem.from_parent(self, name=f"{pid}/{self.path.name}", problem_id=pid, kind=self.kind)
+
+
+class AnswerItem(pytest.Item):
+    def __init__(self, *, problem_id: str, kind: str, **kwargs):
+        super().__init__(**kwargs)
+        self.problem_id = problem_id
+        self.kind = kind
+
+    def expectation(self) -> tuple[bool, dict[str, str]]:
+        full = self.kind == "reference" or self.path.stem.startswith("correct_")
+        m = _EXPECT.search(self.path.read_text(encoding="utf-8", errors="replace"))
+        verdicts = {}
+        if m:
+            for item in m.group(1).split(","):
+                if "=" in item:
+                    part, verdict = (s.strip() for s in item.split("=", 1))
+                    verdicts[part] = verdict
+        return full, verdicts
+
+    def runtest(self) -> None:
+        from lagrade.grade import check
+        from lagrade.library import load_problem
+        from lagrade.spec import SpecError
+
+        try:
+            problem = load_problem(self.problem_id, _problems_dirs(self.path))
+        except SpecError as exc:
+            raise GradingFailure(str(exc)) from None
+        result = check(problem, self.path)
+        full, verdicts = self.expectation()
+        complaints = []
+        if full and not result.full_marks:
+            complaints.append(f"expected full marks, got {result.score:g} / {result.max_score:g}")
+        if not full and result.full_marks:
+            complaints.append("expected a lost mark (this answer is wrong), but it scored full marks")
+        got = result.verdicts()
+        for part, verdict in verdicts.items():
+            if got.get(part) != verdict:
+                complaints.append(f"expected {part} to be {verdict}, got {got.get(part, 'no such part')}")
+        if complaints:
+            raise GradingFailure("; ".join(complaints) + "\n" + str(result))
+
+    def repr_failure(self, excinfo):  # noqa: D102
+        if isinstance(excinfo.value, GradingFailure):
+            return f"{self.path}: {excinfo.value}"
+        return super().repr_failure(excinfo)
+
+    def reportinfo(self):  # noqa: D102
+        return self.path, None, self.name

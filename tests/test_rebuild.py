@@ -1,0 +1,193 @@
+"""rebuild_srepr must reproduce sympy's srepr faithfully and refuse everything else, quickly."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from lagrade.answers.rebuild import EncodedValue, RebuildError, decode_value, rebuild_srepr
+
+t = sp.Symbol("t")
+
+# --------------------------------------------------------------------------- round trips
+
+symbols = st.sampled_from([
+    sp.Symbol("m"), sp.Symbol("g"), sp.Symbol("l_1"), sp.Symbol("p_theta"),
+    sp.Symbol("k", positive=True), sp.Symbol("x", real=True), sp.Symbol("theta_0", nonzero=True),
+])
+coords = st.sampled_from(["theta", "phi", "r", "q1"]).map(lambda n: sp.Function(n)(t))
+derivs = st.tuples(coords, st.integers(1, 3)).map(lambda c: c[0].diff(t, c[1]))
+rationals = st.fractions(max_denominator=10**6).map(lambda f: sp.Rational(f.numerator, f.denominator))
+floats = st.floats(allow_nan=False, allow_infinity=False, width=64).map(sp.Float)
+big_ints = st.integers(-10**40, 10**40).map(sp.Integer)
+leaves = st.one_of(symbols, coords, derivs, rationals, floats, big_ints,
+                   st.sampled_from([sp.pi, sp.E, sp.I, sp.oo, -sp.oo, sp.S.Half, t]))
+unary = [sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.sqrt, sp.Abs, sp.asin, sp.atan, sp.cosh, sp.sign]
+
+
+def combine(children):
+    return st.one_of(
+        st.tuples(children, children).map(lambda a: a[0] + a[1]),
+        st.tuples(children, children).map(lambda a: a[0] * a[1]),
+        st.tuples(children, st.integers(-4, 4)).map(lambda a: a[0] ** a[1]),
+        st.tuples(children, rationals).map(lambda a: a[0] ** a[1]),
+        st.tuples(st.sampled_from(unary), children).map(lambda a: a[0](a[1])),
+        st.tuples(children, children).map(lambda a: sp.atan2(a[0], a[1])),
+        st.tuples(children, children).map(lambda a: sp.Eq(a[0], a[1], evaluate=False)),
+        children.map(lambda e: sp.Derivative(e, t)),
+    )
+
+
+expressions = st.recursive(leaves, combine, max_leaves=12)
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(expressions)
+def test_round_trip_property(expr):
+    text = sp.srepr(expr)
+    assert rebuild_srepr(text) == expr
+
+
+@pytest.mark.parametrize("expr", [
+    sp.Function("theta")(t).diff(t, 2),
+    sp.Eq(sp.Symbol("m", positive=True) * sp.Function("x")(t).diff(t) ** 2 / 2, sp.S.Half),
+    sp.Rational(3, 7) * sp.pi + sp.E + sp.I,
+    sp.Float("1.5"), sp.Float("1.5", 30), sp.Float("1e-400"), sp.oo, -sp.oo, sp.zoo, sp.nan,
+    sp.true, sp.false, sp.ImmutableMatrix([[1, 2], [3, sp.Symbol("a")]]),
+    sp.Piecewise((1, t > 0), (0, True)), sp.Tuple(1, 2), sp.Integral(sp.sin(t), (t, 0, 1)),
+    sp.Lt(t, 1), sp.Ne(t, 1), sp.Ge(t, 2), sp.atan2(t, 1), sp.Max(t, 1), sp.Min(t, 2),
+    sp.Heaviside(t), sp.DiracDelta(t), sp.floor(t), sp.ceiling(t), sp.re(t), sp.im(t),
+    sp.Subs(sp.Function("f")(t).diff(t), t, 0), sp.Function("f")(t, sp.Symbol("m")),
+    sp.EulerGamma, sp.Symbol("x", commutative=False), sp.series(sp.sin(t), t, 0, 4),
+    sp.FiniteSet(1, t), sp.S.EmptySet, sp.And(t > 0, t < 1),
+])
+def test_round_trip_examples(expr):
+    assert rebuild_srepr(sp.srepr(expr)) == expr
+
+
+def test_python_containers_and_dummy():
+    a, b = sp.symbols("a b")
+    assert rebuild_srepr(sp.srepr((a, b))) == (a, b)
+    assert rebuild_srepr(sp.srepr([a, 1])) == [a, 1]
+    assert rebuild_srepr(sp.srepr({a: b})) == {a: b}
+    assert rebuild_srepr(sp.srepr(sp.Dummy("z"))) == sp.Symbol("z")  # identity cannot cross processes
+    assert rebuild_srepr("Half()") == sp.S.Half and rebuild_srepr("Pi()") == sp.pi
+    assert rebuild_srepr("NegativeInfinity()") == -sp.oo and rebuild_srepr("ImaginaryUnit()") == sp.I
+
+
+# --------------------------------------------------------------------------- refusals
+
+@pytest.mark.parametrize("text, fragment", [
+    ("__import__('os').system('echo hi')", "unknown constructor"),
+    ("Symbol('x').__class__", "attribute"),
+    ("Integer(1).__class__.__bases__", "attribute"),
+    ("(lambda: 1)()", "plain constructor"),
+    ("lambda: 1", "unsupported syntax"),
+    ("eval('1')", "unknown constructor"),
+    ("sympify('x')", "unknown constructor"),
+    ("Basic()", "unknown constructor"),
+    ("Symbol('x; import os')", "invalid symbol name"),
+    ("Symbol('" + "a" * 65 + "')", "invalid symbol name"),
+    ("Function('f(x)')(Symbol('t'))", "invalid function name"),
+    ("Symbol('x', commutative='yes')", "keyword"),
+    ("Symbol('x', evil=True)", "unsupported symbol option"),
+    ("Add(Symbol('x'), 'y')", "string arguments"),
+    ("Integer('1')", "integer literal"),
+    ("Integer(" + "9" * 61 + ")", "too large"),
+    ("Float('1e999999999', precision=53)", "malformed Float"),
+    ("Float('1.0', precision=10**9)", "precision"),
+    ("Pow(Integer(10), Pow(Integer(10), Integer(10)))", "number too large"),
+    ("Pow(Integer(2), Integer(10**60))", "number too large"),
+    ("Pow(Add(Integer(1), I), Integer(10**50))", "exponent too large"),
+    ("Pow(Integer(2), Rational(1, 10**50))", "denominator"),
+    ("Derivative(Function('f')(Symbol('t')), Tuple(Symbol('t'), Integer(10**9)))", "derivative order"),
+    ("x", "unknown name"),
+    ("Symbol('x')[0]", "unsupported syntax"),
+    ("[x for x in (1,)]", "unsupported syntax"),
+    ("Add(*[Integer(1)])", "'*' arguments"),
+    ("Add(**{})", "'**' arguments"),
+    ("Symbol('x') + Symbol('y')", "unsupported syntax"),
+    ("", "not well formed"),
+])
+def test_rejections(text, fragment):
+    start = time.monotonic()
+    with pytest.raises(RebuildError, match=None) as info:
+        rebuild_srepr(text)
+    assert fragment in str(info.value), str(info.value)
+    assert time.monotonic() - start < 1
+
+
+def test_nested_exponent_tower_is_fast():
+    text = "Pow(Integer(10), " * 50 + "Integer(10)" + ")" * 50
+    start = time.monotonic()
+    with pytest.raises(RebuildError):
+        rebuild_srepr(text)
+    assert time.monotonic() - start < 1
+
+
+def test_many_big_integer_products_are_bounded():
+    text = "Mul(" + ", ".join(["Integer(" + "9" * 60 + ")"] * 5000) + ")"
+    with pytest.raises(RebuildError, match="too many digits"):
+        rebuild_srepr(text)
+
+
+@pytest.mark.parametrize("depth", [150, 5000, 100_000])
+def test_deep_nesting_is_a_clear_error(depth):
+    text = "sin(" * depth + "Symbol('x')" + ")" * depth
+    with pytest.raises(RebuildError, match="nested too deeply"):
+        rebuild_srepr(text)
+
+
+def test_text_size_limit():
+    with pytest.raises(RebuildError, match="too long"):
+        rebuild_srepr("Integer(1)" + " " * 1_000_001)
+
+
+def test_node_count_limit():
+    text = "Tuple(" + ", ".join(["Integer(1)"] * 160_000) + ")"
+    with pytest.raises(RebuildError, match="too large"):
+        rebuild_srepr(text)
+
+
+def test_moderate_depth_is_fine():
+    expr = sp.Symbol("x")
+    for _ in range(40):
+        expr = sp.sin(expr)
+    assert rebuild_srepr(sp.srepr(expr)) == expr
+
+
+# --------------------------------------------------------------------------- decode_value
+
+def test_decode_value_nested():
+    x = sp.Symbol("x")
+    v = EncodedValue.model_validate({"kind": "dict", "items": [
+        [{"kind": "str", "value": "a"}, {"kind": "list", "items": [
+            {"kind": "expr", "srepr": sp.srepr(x**2)}, {"kind": "bool", "value": True},
+            {"kind": "int", "value": 3}, {"kind": "float", "value": 0.5}]}],
+        [{"kind": "expr", "srepr": "Symbol('x')"}, {"kind": "dict", "items": []}],
+    ]})
+    assert decode_value(v) == {"a": [x**2, True, 3, 0.5], x: {}}
+    assert type(decode_value(v)["a"][2]) is int
+
+
+@pytest.mark.parametrize("bad", [
+    {"kind": "expr"},
+    {"kind": "int", "value": True},
+    {"kind": "bool", "value": 1},
+    {"kind": "list"},
+    {"kind": "dict", "items": [{"kind": "int", "value": 1}]},
+    {"kind": "pickle", "value": "x"},
+    {"kind": "int", "value": 1, "extra": 2},
+])
+def test_encoded_value_validation(bad):
+    with pytest.raises(ValueError):
+        EncodedValue.model_validate(bad)
+
+
+def test_decode_value_refuses_hostile_srepr():
+    with pytest.raises(RebuildError):
+        decode_value(EncodedValue(kind="expr", srepr="__import__('os')"))
