@@ -23,26 +23,31 @@ coords = st.sampled_from(["theta", "phi", "r", "q1"]).map(lambda n: sp.Function(
 derivs = st.tuples(coords, st.integers(1, 3)).map(lambda c: c[0].diff(t, c[1]))
 rationals = st.fractions(max_denominator=10**6).map(lambda f: sp.Rational(f.numerator, f.denominator))
 floats = st.floats(allow_nan=False, allow_infinity=False, width=64).map(sp.Float)
-big_ints = st.integers(-10**40, 10**40).map(sp.Integer)
+big_ints = st.integers(-10**12, 10**12).map(sp.Integer)
 leaves = st.one_of(symbols, coords, derivs, rationals, floats, big_ints,
                    st.sampled_from([sp.pi, sp.E, sp.I, sp.oo, -sp.oo, sp.S.Half, t]))
 unary = [sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.sqrt, sp.Abs, sp.asin, sp.atan, sp.cosh, sp.sign]
+
+
+def _power(base, exp):
+    # exact powers of numbers explode in size (and are refused by design); keep them symbolic
+    return base**exp if base.free_symbols else base
 
 
 def combine(children):
     return st.one_of(
         st.tuples(children, children).map(lambda a: a[0] + a[1]),
         st.tuples(children, children).map(lambda a: a[0] * a[1]),
-        st.tuples(children, st.integers(-4, 4)).map(lambda a: a[0] ** a[1]),
-        st.tuples(children, rationals).map(lambda a: a[0] ** a[1]),
+        st.tuples(children, st.integers(-4, 4)).map(lambda a: _power(*a)),
+        st.tuples(children, rationals).map(lambda a: _power(*a)),
         st.tuples(st.sampled_from(unary), children).map(lambda a: a[0](a[1])),
         st.tuples(children, children).map(lambda a: sp.atan2(a[0], a[1])),
-        st.tuples(children, children).map(lambda a: sp.Eq(a[0], a[1], evaluate=False)),
         children.map(lambda e: sp.Derivative(e, t)),
     )
 
 
-expressions = st.recursive(leaves, combine, max_leaves=12)
+terms = st.recursive(leaves, combine, max_leaves=12)
+expressions = st.one_of(terms, st.tuples(terms, terms).map(lambda a: sp.Eq(a[0], a[1], evaluate=False)))
 
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -82,7 +87,8 @@ def test_python_containers_and_dummy():
 # --------------------------------------------------------------------------- refusals
 
 @pytest.mark.parametrize("text, fragment", [
-    ("__import__('os').system('echo hi')", "unknown constructor"),
+    ("__import__('os').system('echo hi')", "attribute"),
+    ("__import__('os')", "unknown constructor"),
     ("Symbol('x').__class__", "attribute"),
     ("Integer(1).__class__.__bases__", "attribute"),
     ("(lambda: 1)()", "plain constructor"),
@@ -99,18 +105,19 @@ def test_python_containers_and_dummy():
     ("Integer('1')", "integer literal"),
     ("Integer(" + "9" * 61 + ")", "too large"),
     ("Float('1e999999999', precision=53)", "malformed Float"),
-    ("Float('1.0', precision=10**9)", "precision"),
+    ("Float('1.0', precision=1000000000)", "precision"),
     ("Pow(Integer(10), Pow(Integer(10), Integer(10)))", "number too large"),
-    ("Pow(Integer(2), Integer(10**60))", "number too large"),
-    ("Pow(Add(Integer(1), I), Integer(10**50))", "exponent too large"),
-    ("Pow(Integer(2), Rational(1, 10**50))", "denominator"),
-    ("Derivative(Function('f')(Symbol('t')), Tuple(Symbol('t'), Integer(10**9)))", "derivative order"),
+    ("Pow(Integer(2), Integer(1000000000000000000000000000000000000000000000000000000000000))", "number too large"),
+    ("Pow(Add(Integer(1), I), Integer(100000000000000000000000000000000000000000000000000))", "exponent too large"),
+    ("Pow(Integer(2), Rational(1, 100000000000000000000000000000000000000000000000000))", "denominator"),
+    ("Derivative(Function('f')(Symbol('t')), Tuple(Symbol('t'), Integer(1000000000)))", "derivative order"),
     ("x", "unknown name"),
     ("Symbol('x')[0]", "unsupported syntax"),
     ("[x for x in (1,)]", "unsupported syntax"),
     ("Add(*[Integer(1)])", "'*' arguments"),
     ("Add(**{})", "'**' arguments"),
     ("Symbol('x') + Symbol('y')", "unsupported syntax"),
+    ("Integer(2**10)", "unsupported syntax"),
     ("", "not well formed"),
 ])
 def test_rejections(text, fragment):
@@ -148,7 +155,7 @@ def test_text_size_limit():
 
 
 def test_node_count_limit():
-    text = "Tuple(" + ", ".join(["Integer(1)"] * 160_000) + ")"
+    text = "(" + ",".join(["pi"] * 200_000) + ")"
     with pytest.raises(RebuildError, match="too large"):
         rebuild_srepr(text)
 

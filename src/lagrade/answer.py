@@ -35,6 +35,10 @@ def dot(q: sp.Expr, order: int = 1) -> sp.Expr:
     return sp.diff(q, t, order)
 
 
-__all__ = list(sp.__all__) + [
+#: sympy names that are also answer names (``Q`` generalized forces, ``N`` a normal force): a student
+#: who star-imports and leaves such a part unanswered must get "missing", not sympy's object.
+_ANSWER_NAMES = {"Q", "N"}
+
+__all__ = [n for n in sp.__all__ if n not in _ANSWER_NAMES] + [
     "t", "coordinates", "parameters", "momenta", "dot",
 ]

@@ -270,7 +270,7 @@ _CONSTRUCTORS: dict[str, Any] = {
     "GreaterThan": _unevaluated(sp.Ge),
     "And": sp.And, "Or": sp.Or, "Not": sp.Not,
     "Integral": sp.Integral, "Subs": sp.Subs, "Order": sp.Order,
-    "FiniteSet": sp.FiniteSet,
+    "FiniteSet": sp.FiniteSet, "AccumulationBounds": sp.AccumBounds,
     "Piecewise": sp.Piecewise, "ExprCondPair": sp.functions.elementary.piecewise.ExprCondPair,
     "MutableDenseMatrix": _matrix, "ImmutableDenseMatrix": _matrix, "Matrix": _matrix,
     "ImmutableMatrix": _matrix,
@@ -338,6 +338,8 @@ class _Builder:
             return {self.build(k, d): self.build(v, d) for k, v in zip(node.keys, node.values)}
         if isinstance(node, ast.Call):
             return self.call(node, d)
+        if isinstance(node, ast.Attribute):
+            raise RebuildError("attribute access is not allowed in srepr text")
         raise RebuildError(f"unsupported syntax {type(node).__name__} in srepr text")
 
     def call(self, node: ast.Call, depth: int) -> Any:

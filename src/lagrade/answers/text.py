@@ -49,6 +49,8 @@ class TextAnswerError(ValueError):
 
 def parse_math(text: str, coordinates: Sequence[str], known_names: Iterable[str] | None = None) -> Any:
     """Parse one plain-text answer into a sympy object (or list/dict/bool of them)."""
+    if isinstance(text, str):
+        text = text.replace("^", "**")  # token-level, so x^2 + 1 keeps the precedence of **
     try:
         tree = parse_limited(text, "answer")
     except RebuildError as exc:

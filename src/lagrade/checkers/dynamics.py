@@ -57,6 +57,7 @@ def _reference_lagrange(mech: Mechanics, params: np.ndarray):
 
 
 def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc) -> Comparison:
+    """``student_acc`` is called once per right-hand side evaluation: it must be compiled already."""
     q, qd, params, extra = _trajectory_inits(ctx, mech, part)
     n = len(mech.names)
     stu = _lagrange_rates(lambda q_, qd_, t: student_acc(q_, qd_, t, params, extra), n)
@@ -97,6 +98,18 @@ def _wrong(part: Part, fraction: float, message: str, traj: Comparison | None) -
     return graded(part, fraction, "numeric", f"{message}{detail}")
 
 
+def _lazy(build: Callable[[], Callable]) -> Callable:
+    """Compile a student's dynamics only if a trajectory is needed, and then only once."""
+    made: list[Callable] = []
+
+    def call(*args):
+        if not made:
+            made.append(build())
+        return made[0](*args)
+
+    return call
+
+
 def _sentence(parts: list[str]) -> str:
     text = "; ".join(parts)
     return (text[:1].upper() + text[1:] + ".") if text else ""
@@ -122,8 +135,24 @@ def split_energy(L: sp.Expr, mech: Mechanics) -> tuple[sp.Expr, sp.Expr]:
 
 
 def _el_matrix(L: sp.Expr, mech: Mechanics, pts, part: Part) -> np.ndarray:
+    """Lagrange's equations of ``L`` with the scene's generalized forces, ``d/dt dL/dq' - dL/dq - Q``,
+    at the sampled states (random accelerations): with Q != 0 a scaled L is no longer equivalent."""
     args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *mech.params, *(sp.Symbol(s) for s in part.symbols)]
-    return compile_exprs(euler_lagrange(L, mech.s), args)(*pts.args(args))
+    rows = [e - Qi for e, Qi in zip(euler_lagrange(L, mech.s), mech.Q)]
+    return compile_exprs(rows, args)(*pts.args(args))
+
+
+def _lagrange_solver(L: sp.Expr, mech: Mechanics, part: Part):
+    """Accelerations of the motion ``L`` (with the scene's forces) defines, compiled once."""
+    el = [e - Qi for e, Qi in zip(euler_lagrange(L, mech.s), mech.Q)]
+    rows = CompiledRows(el, mech.s.qdd, [*mech.s.q, *mech.s.qd, T, *mech.params,
+                                         *(sp.Symbol(s) for s in part.symbols)])
+    return lambda q, qd, t, params, extra: rows.solve([*q, *qd, t, *params, *extra])
+
+
+def reduce_by_constraints(expr: sp.Expr, mech: Mechanics) -> sp.Expr:
+    """A student may keep a constrained coordinate (x with x = R*phi): the constraint is part of the problem."""
+    return expr.xreplace(mech.constrained) if mech.constrained else expr
 
 
 def _scaling(E_s: np.ndarray, E_r: np.ndarray, groups: int, per: int) -> np.ndarray | None:
@@ -144,7 +173,7 @@ def _scaling(E_s: np.ndarray, E_r: np.ndarray, groups: int, per: int) -> np.ndar
 
 def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
     mech = ctx.mech(part)
-    L_s = read_expr(value, part, mech, plain_coordinates=False, max_order=1)
+    L_s = reduce_by_constraints(read_expr(value, part, mech, plain_coordinates=False, max_order=1), mech)
     if any(L_s.has(a) for a in mech.s.qdd):
         raise InvalidAnswer(f"{part.name} contains accelerations; a Lagrangian depends on q, q' and t only")
     pts, groups, per = _grouped_points(ctx, mech, part)
@@ -152,14 +181,7 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
     E_s = _el_matrix(L_s, mech, pts, part)
     c = _scaling(E_s, E_r, groups, per)
 
-    def student_acc(q, qd, t, params, extra):
-        return lagrange_solver(L_s)(q, qd, t, params, extra)
-
-    def lagrange_solver(L):
-        el = [e - Qi for e, Qi in zip(euler_lagrange(L, mech.s), mech.Q)]
-        rows = CompiledRows(el, mech.s.qdd, [*mech.s.q, *mech.s.qd, T, *mech.params,
-                                             *(sp.Symbol(s) for s in part.symbols)])
-        return lambda q, qd, t, params, extra: rows.solve([*q, *qd, t, *params, *extra])
+    student_acc = _lazy(lambda: _lagrange_solver(L_s, mech, part))
 
     if c is not None and np.allclose(c, 1.0, rtol=1e-8, atol=0):
         proof = proves_all_zero([a - b for a, b in zip(euler_lagrange(L_s, mech.s), euler_lagrange(mech.L, mech.s))],
@@ -280,17 +302,18 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
         return jac.reshape(len(exprs), 3 * n, pts.K), compile_exprs(exprs, args)(*at_eq)
 
     A_s, g0 = linear_part(rows)
-    A_r, _ = linear_part(mech.EL)
+    A_r, g0_r = linear_part(mech.EL)
+    # Affine rows [d/d(state) | value at equilibrium]: a driven system keeps its forcing term.
     consistent = []
     for i in range(len(rows)):
         ok = True
         for k in range(pts.K):
-            a = A_s[i, :, k]
-            coef, *_ = np.linalg.lstsq(A_r[:, :, k].T, a, rcond=None)
-            resid = a - A_r[:, :, k].T @ coef
+            a = np.append(A_s[i, :, k], g0[i, k])
+            R = np.column_stack([A_r[:, :, k], g0_r[:, k]])
+            coef, *_ = np.linalg.lstsq(R.T, a, rcond=None)
+            resid = a - R.T @ coef
             scale = max(np.abs(a).max(), 1e-300)
-            if not (np.all(np.isfinite(a)) and np.abs(resid).max() <= 1e-7 * scale
-                    and abs(g0[i, k]) <= 1e-7 * max(scale, 1.0)):
+            if not (np.all(np.isfinite(a)) and np.abs(resid).max() <= 1e-7 * scale):
                 ok = False
         consistent.append(ok)
     use = [i for i, ok in enumerate(consistent) if ok and np.abs(A_s[i]).max() > 0]
@@ -343,8 +366,7 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
     tol = 1e-8 * scale_of(h_s, h_r)
     same = all(np.all(np.abs(diff[g * per:(g + 1) * per] - diff[g * per]) <= tol) for g in range(groups))
 
-    def student_rates(q_, p_, t_, params_, extra_):
-        return _hamiltonian_rates(H_s, mech, part)(q_, p_, t_, params_, extra_)
+    student_rates = _lazy(lambda: _hamiltonian_rates(H_s, mech, part))
 
     if same:
         proof = None

@@ -29,7 +29,7 @@ def check_conserved(ctx: Context, part: Part, value: object) -> PartResult:
     mech = ctx.mech(part)
     items = list(value) if isinstance(value, (list, tuple)) else [value]
     extra = [f"p_{n}" for n in mech.names]
-    studs = [_in_velocities(read_sympy(as_expr(v, part), part, mech, plain_coordinates=True, extra=extra,
+    studs = [_in_velocities(read_sympy(as_expr(v, part), part, mech, plain_coordinates=True, momenta=True,
                                        max_order=1), mech) for v in items]
     refs = [_in_velocities(mech.parse(str(r), extra), mech) for r in part.reference]
     pts = with_reference_dynamics(mech, sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name)))
@@ -84,18 +84,24 @@ def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:
     for name in mech.names:
         e = as_expr(given[name], part)
         sol[name] = read_sympy(e, part, mech, plain_coordinates=False, max_order=0)
-    subs = {}
-    for name, q, qd, qdd in zip(mech.names, mech.s.q, mech.s.qd, mech.s.qdd):
-        subs[q], subs[qd], subs[qdd] = sol[name], sp.diff(sol[name], T), sp.diff(sol[name], T, 2)
-    residuals = [e.xreplace(subs) for e in mech.EL]
     pts = sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name), extra=part.symbols)
     args = [T, *mech.params, *(sp.Symbol(s) for s in part.symbols)]
     argv = pts.args(args)
-    res = compile_exprs(residuals, args)(*argv)
-    scale = compile_exprs([sp.Add(*[abs(term) for term in sp.Add.make_args(sp.expand(e))]) for e in residuals],
-                          args)(*argv)
+    # The state along the student's q(t), then each term of Lagrange's equations at that state:
+    # the residual is their sum, and its scale the sum of their sizes (robust to exact cancellation).
+    motion = [e for name in mech.names for e in (sol[name], sp.diff(sol[name], T), sp.diff(sol[name], T, 2))]
+    values = compile_exprs(motion, args)(*argv)
+    state = dict(zip([v for trio in zip(mech.s.q, mech.s.qd, mech.s.qdd) for v in trio], values))
+    state_args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, *args]
+    state_argv = [*(state[v] for v in [*mech.s.q, *mech.s.qd, *mech.s.qdd]), *argv]
+    res, scale = [], []
+    for row in mech.EL:
+        terms = compile_exprs(list(sp.Add.make_args(sp.expand(row))), state_args)(*state_argv)
+        res.append(terms.sum(axis=0))
+        scale.append(np.abs(terms).sum(axis=0))
+    res, scale = np.array(res), np.array(scale)
     notes = []
-    if not np.all(np.abs(res) <= 1e-7 * np.maximum(scale, 1e-12)):
+    if not np.all(np.abs(res) <= 1e-8 * np.maximum(scale, 1e-300)):
         notes.append("it does not satisfy the equation of motion")
     for key, text in part.initial.items():
         want = mech.parse(text, part.symbols)

@@ -27,14 +27,15 @@ def _domain(ctx: Context, part: Part, mech: Mechanics) -> tuple[Points, list[sp.
 
 
 def _reference(part: Part, mech: Mechanics, text: object) -> sp.Expr:
-    extra = [*part.symbols, *(str(m) for m in mech.multipliers), *(str(p) for p in mech.s.p)]
+    extra = [*part.symbols, *(str(m) for m in mech.multipliers), *(str(p) for p in mech.s.p),
+             *(f"delta_{n}" for n in mech.all_names)]
     return mech.parse(str(text), extra)
 
 
 def _read(ctx: Context, part: Part, mech: Mechanics, value: object) -> sp.Expr:
     expr = as_expr(value, part)
-    extra = [*(f"p_{n}" for n in mech.names), *(f"delta_{n}" for n in mech.all_names)]
-    return read_sympy(expr, part, mech, plain_coordinates=True, extra=extra)
+    extra = [f"delta_{n}" for n in mech.all_names]
+    return read_sympy(expr, part, mech, plain_coordinates=True, momenta=True, extra=extra)
 
 
 def _evaluate(expr: sp.Expr, pts: Points, syms: list[sp.Symbol]) -> np.ndarray:
@@ -80,6 +81,8 @@ def _describe_difference(a: np.ndarray, b: np.ndarray) -> str:
     with np.errstate(all="ignore"):
         ratio = a / b
     finite = ratio[np.isfinite(ratio)]
+    if np.all(np.abs(a) <= 1e-12 * scale_of(b)):
+        return "is zero, which it is not"
     if finite.size == a.size and finite.size and np.allclose(finite, finite[0], rtol=1e-8):
         c = finite[0]
         if np.isclose(c, -1.0):
@@ -120,6 +123,8 @@ def check_expression(ctx: Context, part: Part, value: object) -> PartResult:
         fraction = right / len(ref)
         method = "numeric" if "numeric" in methods or not methods else "symbolic"
         feedback = "correct." if not notes else "Incorrect: " + "; ".join(notes) + "."
+        if notes:
+            feedback = _dict_mistake_message(ctx, part, mech, given, pts, syms) or feedback
         return graded(part, fraction, method, feedback)
     if isinstance(value, sp.Equality) and _is_definition(value, mech, part):
         value = value.rhs
@@ -128,7 +133,7 @@ def check_expression(ctx: Context, part: Part, value: object) -> PartResult:
     if ok:
         return graded(part, 1.0, method, "correct.")
     hint = _mistake_message(ctx, part, mech, value, pts, syms)
-    return graded(part, 0.0, "numeric", hint or f"Incorrect: your {part.prompt or part.name} {why}.")
+    return graded(part, 0.0, "numeric", hint or f"Incorrect: {part.name} {why}.")
 
 
 def _is_definition(eq: sp.Equality, mech: Mechanics, part: Part) -> bool:
@@ -144,6 +149,20 @@ def _mistake_message(ctx, part, mech, value, pts, syms) -> str | None:
     for mistake in part.mistakes:
         try:
             if np.all(agree(a, _evaluate(_reference(part, mech, mistake.answer), pts, syms))):
+                return mistake.message
+        except Exception:  # noqa: BLE001
+            continue
+    return None
+
+
+def _dict_mistake_message(ctx, part, mech, given: dict, pts, syms) -> str | None:
+    """A named mistake for a dict part matches when every key it lists matches the student's value."""
+    for mistake in part.mistakes:
+        if not isinstance(mistake.answer, dict) or not set(mistake.answer) <= set(given):
+            continue
+        try:
+            if all(np.all(agree(_evaluate(_read(ctx, part, mech, given[k]), pts, syms),
+                                _evaluate(_reference(part, mech, v), pts, syms))) for k, v in mistake.answer.items()):
                 return mistake.message
         except Exception:  # noqa: BLE001
             continue
@@ -186,8 +205,10 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
         expr = read_sympy(value.lhs - value.rhs, part, mech, plain_coordinates=True, extra=[part.unknown])
         if x not in expr.free_symbols:
             raise InvalidAnswer(f"{part.name}: the equation does not contain {part.unknown}")
-        at_root = compile_exprs([expr], [x, *syms])(b, *pts.args(syms))[0]
-        off = compile_exprs([expr], [x, *syms])(b + 0.05, *pts.args(syms))[0]
+        others = [s for s in syms if s != x]  # the unknown may also be a coordinate or a parameter
+        f = compile_exprs([expr], [x, *others])
+        at_root = f(b, *pts.args(others))[0]
+        off = f(b + 0.05, *pts.args(others))[0]
         scale = scale_of(off)
         if np.all(np.abs(at_root) <= 1e-8 * scale) and np.any(np.abs(off) > 1e-6 * scale):
             return graded(part, 1.0, "numeric", f"correct: the true {part.unknown} satisfies your equation.")

@@ -1,0 +1,17 @@
+"""Problem 12.36: Hamilton's equations for a point mass on a straight line.
+
+L = m x'^2/2 - V(x); p = m x'; H = p x' - L = p^2/(2m) + V(x);
+x' = dH/dp = p/m, p' = -dH/dx = -V'(x).
+Free particle: V = 0 -> p' = 0 (p constant, x = x0 + p t/m).  Constant force F: V = -F x -> p' = F.
+"""
+from sympy import Eq, Function, symbols
+
+t = symbols("t")
+m, F = symbols("m F")
+x, p_x = Function("x")(t), Function("p_x")(t)
+
+H = p_x**2 / (2 * m)
+hamilton = [Eq(x.diff(t), p_x / m), Eq(p_x.diff(t), 0)]
+
+H_F = p_x**2 / (2 * m) - F * x
+hamilton_F = [Eq(x.diff(t), p_x / m), Eq(p_x.diff(t), F)]

@@ -1,0 +1,11 @@
+# expect: L=incorrect, eom=incorrect, a=incorrect, a_table=correct, S_t=incorrect
+# Component of M's weight along the incline taken as M*g*cos(alpha).
+from lagrade.answer import *
+
+m, M, g, alpha = parameters("m M g alpha")
+x = coordinates("x")
+L = (m + M) * dot(x) ** 2 / 2 + m * g * x - M * g * x * cos(alpha)
+eom = [Eq((m + M) * dot(x, 2), g * (m - M * cos(alpha)))]
+a = g * (m - M * cos(alpha)) / (m + M)
+a_table = m * g / (m + M)
+S_t = m * M * g * (1 + cos(alpha)) / (m + M)

@@ -1,0 +1,10 @@
+# expect: H=correct, hamilton=correct, H_F=incorrect, hamilton_F=partial
+# The potential of the force written +F x (sign of F = -dV/dx lost), and p' = +dH/dx.
+from lagrade.answer import *
+
+m, F = parameters("m F")
+x, p_x = coordinates("x p_x")
+H = p_x**2 / (2 * m)
+hamilton = [Eq(x.diff(t), p_x / m), Eq(p_x.diff(t), 0)]
+H_F = p_x**2 / (2 * m) + F * x
+hamilton_F = [Eq(x.diff(t), p_x / m), Eq(p_x.diff(t), -F)]

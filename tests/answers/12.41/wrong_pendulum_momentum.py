@@ -1,0 +1,15 @@
+# expect: H_a=correct, hamilton_a=correct, solution_a=correct, H_b=incorrect, hamilton_b=partial, solution_b=correct
+# p_theta taken as the linear momentum m*l*theta' instead of the angular momentum m*l**2*theta'.
+from lagrade.answer import *
+
+m, g, l = parameters("m g l")
+x0, y0, vx0, vy0, theta0 = symbols("x0 y0 vx0 vy0 theta0")
+x, y, theta = coordinates("x y theta")
+p_x, p_y, p_theta = momenta("p_x p_y p_theta")
+
+H_a = (p_x**2 + p_y**2) / (2 * m) + m * g * y
+hamilton_a = [Eq(dot(x), p_x / m), Eq(dot(y), p_y / m), Eq(dot(p_x), 0), Eq(dot(p_y), -m * g)]
+solution_a = {"x": x0 + vx0 * t, "y": y0 + vy0 * t - g * t**2 / 2}
+H_b = p_theta**2 / (2 * m) - m * g * l * cos(theta)
+hamilton_b = [Eq(dot(theta), p_theta / m), Eq(dot(p_theta), -m * g * l * sin(theta))]
+solution_b = {"theta": theta0 * cos(sqrt(g / l) * t)}

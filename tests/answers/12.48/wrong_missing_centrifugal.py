@@ -1,0 +1,18 @@
+# expect: L=correct, H=correct, hamilton=partial, H_conserved=correct, dH_dt=correct, H_is_E=incorrect
+# Hamilton's p_r' equation misses the centrifugal term p_theta**2/(m*r**3); "time dependence means H is not E".
+from lagrade.answer import *
+
+m, k, a = parameters("m k a")
+r, theta = coordinates("r theta")
+p_r, p_theta = momenta("p_r p_theta")
+L = m * (dot(r) ** 2 + r**2 * dot(theta) ** 2) / 2 + k * exp(-a * t) / r
+H = p_r**2 / (2 * m) + p_theta**2 / (2 * m * r**2) - k * exp(-a * t) / r
+hamilton = [
+    Eq(dot(r), p_r / m),
+    Eq(dot(theta), p_theta / (m * r**2)),
+    Eq(dot(p_r), -k * exp(-a * t) / r**2),
+    Eq(dot(p_theta), 0),
+]
+H_conserved = False
+dH_dt = a * k * exp(-a * t) / r
+H_is_E = False

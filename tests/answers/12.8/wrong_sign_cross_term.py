@@ -1,0 +1,12 @@
+# expect: L_a=incorrect, eom_a=incorrect, L_b=correct, eom_b=correct
+# (a) The face taken to descend toward -x1 while keeping x2's definition: cross term with the wrong sign.
+from lagrade.answer import *
+
+m, M, g, alpha, R = parameters("m M g alpha R")
+x1, x2, X, theta = coordinates("x1 x2 X theta")
+L_a = (M + m) * dot(x1) ** 2 / 2 + m * dot(x2) ** 2 / 2 - m * cos(alpha) * dot(x1) * dot(x2) + m * g * x2 * sin(alpha)
+eom_a = [Eq((M + m) * dot(x1, 2) - m * cos(alpha) * dot(x2, 2), 0),
+         Eq(dot(x2, 2) - cos(alpha) * dot(x1, 2), g * sin(alpha))]
+L_b = (M + m) * dot(X) ** 2 / 2 + m * R * cos(theta) * dot(X) * dot(theta) + m * R**2 * dot(theta) ** 2 / 2 - m * g * R * cos(theta)
+eom_b = [Eq((M + m) * dot(X, 2) + m * R * (cos(theta) * dot(theta, 2) - sin(theta) * dot(theta) ** 2), 0),
+         Eq(R * dot(theta, 2) + cos(theta) * dot(X, 2), g * sin(theta))]

@@ -1,0 +1,16 @@
+# expect: L_a=incorrect, eom_a=incorrect, solution_a=incorrect, L_b=incorrect, eom_b=incorrect, solution_b=incorrect, a=incorrect
+# Moment of inertia of a ring (M R^2) used for the uniform disk: acceleration g sin(phi)/2 instead of 2 g sin(phi)/3.
+from sympy import Eq, Function, sin, symbols
+
+t = symbols("t")
+M, R, g, l, phi = symbols("M R g l phi")
+theta0, w0, y0, v0 = symbols("theta0 w0 y0 v0")
+theta, y = Function("theta")(t), Function("y")(t)
+
+L_a = M * R**2 * theta.diff(t) ** 2 - M * g * (l - R * theta) * sin(phi)
+eom_a = [Eq(theta.diff(t, 2), g * sin(phi) / (2 * R))]
+solution_a = {"theta": theta0 + w0 * t + g * sin(phi) * t**2 / (4 * R)}
+L_b = M * y.diff(t) ** 2 - M * g * (l - y) * sin(phi)
+eom_b = [Eq(y.diff(t, 2), g * sin(phi) / 2)]
+solution_b = {"y": y0 + v0 * t + g * sin(phi) * t**2 / 4}
+a = g * sin(phi) / 2

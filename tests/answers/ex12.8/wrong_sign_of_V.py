@@ -1,0 +1,14 @@
+# expect: H=incorrect, hamilton=partial, cyclic=correct, conserved=correct
+# Potential taken as +m g x2 sin(theta) although x2 is measured down the incline: the particle would slide up.
+from lagrade.answer import *
+
+m, M, g, theta = parameters("m M g theta")
+x1, x2 = coordinates("x1 x2")
+p_x1, p_x2 = momenta("p_x1 p_x2")
+c, s = cos(theta), sin(theta)
+D = M + m * s**2
+H = (m * p_x1**2 - 2 * m * c * p_x1 * p_x2 + (M + m) * p_x2**2) / (2 * m * D) + m * g * s * x2
+hamilton = [Eq(x1.diff(t), (p_x1 - c * p_x2) / D), Eq(x2.diff(t), ((M + m) * p_x2 - m * c * p_x1) / (m * D)),
+            Eq(p_x1.diff(t), 0), Eq(p_x2.diff(t), -m * g * s)]
+cyclic = ["x1"]
+conserved = [(M + m) * dot(x1) + m * c * dot(x2)]

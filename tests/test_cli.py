@@ -1,0 +1,105 @@
+"""The command line as a user meets it: list, show, template, check, exit codes and --json."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from lagrade.cli import main
+
+ROOT = Path(__file__).resolve().parents[1]
+REF = ROOT / "reference_solutions"
+
+
+def run(*args: str) -> tuple[int, str]:
+    result = CliRunner().invoke(main, list(args))
+    return result.exit_code, result.output
+
+
+def test_list_shows_every_problem_with_part_counts():
+    code, out = run("list")
+    assert code == 0
+    assert "12.22" in out and "Compound (double) Atwood" in out
+    code, out = run("list", "--json")
+    rows = json.loads(out)
+    ids = [r["id"] for r in rows]
+    assert "12.43" in ids and "ex12.3" in ids
+    assert all(r["parts"] >= 1 for r in rows)
+    assert ids.index("12.3") < ids.index("12.10") < ids.index("ex12.3"), "ids sort numerically"
+
+
+def test_show_lists_names_assumptions_and_forms():
+    code, out = run("show", "12.22")
+    assert code == 0
+    for needle in ("S_t", "a_case", "m1", "x(t)", "Assumptions", "dict with keys 'S1', 'S2', 'S3'"):
+        assert needle in out
+
+
+def test_show_unknown_problem_is_a_usage_error():
+    code, out = run("show", "12.999")
+    assert code == 2 and "no problem '12.999'" in out
+
+
+def test_template_is_a_valid_answer_file_with_every_part_missing(tmp_path):
+    code, out = run("template", "12.46")
+    assert code == 0
+    path = tmp_path / "answer.py"
+    path.write_text(out)
+    compile(out, str(path), "exec")
+    code, out = run("check", "12.46", str(path), "--json")
+    data = json.loads(out)
+    assert code == 1
+    assert {p["verdict"] for p in data["parts"]} == {"missing"}
+    assert [p["part"] for p in data["parts"]] == ["L", "H", "cyclic", "conserved", "omega"]
+
+
+def test_check_reference_exit_0_and_json_shape():
+    code, out = run("check", "12.43", str(REF / "12.43" / "answer.py"), "--json")
+    assert code == 0
+    data = json.loads(out)  # exactly one JSON object
+    assert set(data) >= {"problem", "score", "max_score", "parts"}
+    assert data["problem"] == "12.43" and data["score"] == data["max_score"] == 3.0
+    for part in data["parts"]:
+        assert set(part) == {"part", "verdict", "score", "max_score", "method", "feedback"}
+        assert part["method"] in {"symbolic", "numeric", "trajectory", "exact"}
+
+
+def test_check_wrong_answer_exit_1_with_feedback(tmp_path):
+    path = tmp_path / "answer.py"
+    path.write_text("from lagrade.answer import *\nm, l, g = parameters('m l g')\ntheta = coordinates('theta')\n"
+                    "eom = Eq(theta.diff(t, 2), -g/l*theta)\n")
+    code, out = run("check", "12.43", str(path))
+    assert code == 1
+    assert "incorrect" in out and "missing" in out and "total 0 / 3" in out
+
+
+@pytest.mark.parametrize("content, needle", [
+    ("L = (\n", "answer.py:1"),
+    ("import os\nL = 1\n", "import of 'os' is not allowed"),
+])
+def test_unusable_answer_exit_2_one_clear_line(tmp_path, content, needle):
+    path = tmp_path / "answer.py"
+    path.write_text(content)
+    code, out = run("check", "12.43", str(path))
+    assert code == 2
+    assert needle in out
+
+
+def test_missing_file_and_unknown_part_exit_2(tmp_path):
+    assert run("check", "12.43", str(tmp_path / "nope.py"))[0] == 2
+    code, out = run("check", "12.43", str(REF / "12.43" / "answer.py"), "--part", "Lagr")
+    assert code == 2 and "no part Lagr" in out
+
+
+def test_console_script_runs_the_bundled_example():
+    exe = Path(sys.executable).with_name("lagrade")
+    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "lagrade"]
+    proc = subprocess.run([*cmd, "check", "12.22", str(REF / "12.22" / "answer.py")], capture_output=True,
+                          text=True, timeout=120)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert "total 5 / 5" in proc.stdout
