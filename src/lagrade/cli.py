@@ -149,9 +149,14 @@ def template(problem_id: str, problems_dir: tuple[Path, ...]) -> None:
 @click.option("--accuracy", type=click.Choice(["fast", "default", "strict"]), default="default",
               show_default=True, help="Tolerances of the trajectory comparison.")
 @click.option("--part", "only", multiple=True, help="Grade only these parts.")
+@click.option("--hints", is_flag=True, help="More specific feedback: which term is missing or extra.")
+@click.option("--credit", "credit_file", type=click.Path(exists=True, path_type=Path),
+              help="TOML file with a [credit] table changing the partial-credit defaults.")
+@click.option("--plot", "plot_file", type=click.Path(path_type=Path),
+              help="PNG with your motion against the true one for each incorrect dynamics part.")
 @problems_option
-def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tuple[str, ...],
-          problems_dir: tuple[Path, ...]) -> None:
+def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tuple[str, ...], hints: bool,
+          credit_file: Path | None, plot_file: Path | None, problems_dir: tuple[Path, ...]) -> None:
     """Grade ANSWER (answer.py or answer.toml) for PROBLEM_ID."""
     from lagrade.answers.load import load_answer
     from lagrade.grade import grade_values
@@ -165,10 +170,22 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     unknown = [o for o in only if o not in {part.name for part in p.parts}]
     if unknown:
         _fail(f"problem {p.id} has no part {', '.join(unknown)}", as_json)
+    from lagrade.credit import load_credit
+
+    try:
+        credit = load_credit(credit_file) if credit_file else None
+    except (ValueError, OSError) as exc:
+        _fail(f"{credit_file}: {exc}", as_json)
     loaded = load_answer(answer, p)
-    result = grade_values(p, loaded, accuracy, list(only) or None)
+    result = grade_values(p, loaded, accuracy, list(only) or None, hints=hints, credit=credit)
+    if plot_file is not None:
+        from lagrade.plot import plot_result
+
+        drawn = plot_result(result, plot_file)
+        if not as_json:
+            click.echo(f"plot: {plot_file}" if drawn else "plot: no incorrect dynamics part to draw", err=True)
     if as_json:
-        click.echo(result.model_dump_json(exclude={"parts": {"__all__": {"read_as"}}}))
+        click.echo(result.model_dump_json())
     else:
         from lagrade.report import render
 

@@ -13,7 +13,9 @@ from pathlib import Path
 from lagrade.answers.load import LoadedAnswer, load_answer
 from lagrade.checkers import CHECKERS, Context, InvalidAnswer
 from lagrade.compare.trajectory import ACCURACY
+from lagrade.credit import Credit
 from lagrade.library import load_problem
+from lagrade.readback import as_latex, as_unicode
 from lagrade.reference import ReferenceCache, SceneError
 from lagrade.result import CheckResult, PartResult
 from lagrade.spec import Problem
@@ -35,8 +37,8 @@ def _unusable(part, verdict: str, feedback: str) -> PartResult:
 
 
 def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "default",
-                 only: list[str] | None = None) -> CheckResult:
-    ctx = Context(problem, references(problem), ACCURACY[accuracy])
+                 only: list[str] | None = None, hints: bool = False, credit: Credit | None = None) -> CheckResult:
+    ctx = Context(problem, references(problem), ACCURACY[accuracy], hints=hints, credit=credit or Credit())
     parts = []
     for part in problem.parts:
         if only and part.name not in only:
@@ -50,24 +52,28 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
             else:
                 parts.append(_unusable(part, "missing", f"no value bound to '{part.name}'"))
             continue
+        value = answer.values[part.name]
         try:
-            parts.append(CHECKERS[part.kind](ctx, part, answer.values[part.name]))
+            graded_part = CHECKERS[part.kind](ctx, part, value)
         except InvalidAnswer as exc:
-            parts.append(_unusable(part, "invalid", str(exc)))
+            graded_part = _unusable(part, "invalid", str(exc))
         except SceneError:
             raise
         except Exception as exc:  # noqa: BLE001  (a grader bug must not sink the other parts)
             if os.environ.get("LAGRADE_DEBUG"):
                 raise
-            parts.append(_unusable(part, "invalid", f"lagrade could not grade this part ({type(exc).__name__}: "
-                                                    f"{exc}); please report it to your instructor"))
+            graded_part = _unusable(part, "invalid", f"lagrade could not grade this part ({type(exc).__name__}: "
+                                                     f"{exc}); please report it to your instructor")
+        graded_part.read_as = as_latex(value)
+        graded_part.read_as_text = as_unicode(value)
+        parts.append(graded_part)
     return CheckResult(problem=problem.id, score=round(sum(p.score for p in parts), 6),
                        max_score=sum(p.max_score for p in parts), parts=parts,
                        problems=[str(p) for p in answer.problems])
 
 
 def check(problem: str | Problem, answer: str | Path | None = None, *, accuracy: str = "default",
-          limits=None, **parts: object) -> CheckResult:
+          limits=None, hints: bool = False, credit: Credit | None = None, **parts: object) -> CheckResult:
     """Grade an answer file, or parts given directly as sympy objects (``check("12.43", H=...)``)."""
     prob = problem if isinstance(problem, Problem) else load_problem(problem)
     loaded = load_answer(Path(answer), prob, limits) if answer is not None else LoadedAnswer()
@@ -76,4 +82,4 @@ def check(problem: str | Problem, answer: str | Path | None = None, *, accuracy:
             loaded.values[prob.part(name).name] = value
         except KeyError:
             raise TypeError(f"problem {prob.id} has no part '{name}'") from None
-    return grade_values(prob, loaded, accuracy)
+    return grade_values(prob, loaded, accuracy, hints=hints, credit=credit)

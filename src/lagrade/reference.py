@@ -90,6 +90,9 @@ class Mechanics:
         self.force = [-e.xreplace(zero_acc) for e in self.EL]
         if any(self.mass.has(a) for a in self.s.qdd):
             raise SceneError("Lagrange's equations are not linear in the accelerations")
+        from lagrade.effects import validate_effects  # a scene may only use the effects it declares
+
+        validate_effects(self)
 
     def _parse(self, text: str, what: str, params: Sequence[str]) -> sp.Expr:
         extra = [c.multiplier for c in self.system.constraints if c.multiplier]

@@ -25,9 +25,21 @@ def table(result: CheckResult) -> Table:
     return t
 
 
-def render(result: CheckResult, console: Console) -> None:
+def render(result: CheckResult, console: Console, read_as: bool = True) -> None:
     for problem in result.problems:
         console.print(problem, style="yellow", highlight=False, markup=False)
+    if read_as and any(p.read_as_text for p in result.parts):
+        console.print("Your answer, as lagrade read it:", style="bold")
+        for p in result.parts:
+            if p.read_as_text:
+                lines = p.read_as_text.splitlines() or [""]
+                if len(lines) == 1:
+                    console.print(f"  {p.part} = {lines[0]}", highlight=False, markup=False, soft_wrap=True)
+                else:
+                    console.print(f"  {p.part} =", highlight=False, markup=False)
+                    for line in lines:
+                        console.print(f"      {line}", highlight=False, markup=False, soft_wrap=True)
+        console.print()
     console.print(table(result))
 
 

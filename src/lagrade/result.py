@@ -5,7 +5,7 @@ from __future__ import annotations
 import html
 from typing import Literal
 
-from pydantic import BaseModel, Field
+from pydantic import BaseModel, Field, PrivateAttr
 
 Verdict = Literal["correct", "partial", "incorrect", "missing", "invalid"]
 Method = Literal["symbolic", "numeric", "trajectory", "exact"]
@@ -20,7 +20,10 @@ class PartResult(BaseModel):
     max_score: float
     method: Method
     feedback: str = ""
-    read_as: str | None = Field(default=None, description="the answer as lagrade understood it")
+    read_as: str | None = Field(default=None, description="the answer as lagrade understood it (LaTeX)")
+    read_as_text: str | None = Field(default=None, exclude=True, description="the same, for a terminal")
+    #: how to integrate this part's motion again (student and reference), for pictures; not serialized
+    _trajectory: object = PrivateAttr(default=None)
 
 
 class CheckResult(BaseModel):

@@ -78,11 +78,18 @@ def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
     out.problems = problems
     for name, value in raw.items():
         if name in names:
-            out.values.setdefault(names[name], value)
+            part = names[name]
+            # ``a = Symbol("a")`` (a radius named like the part) must not shadow an alias answer.
+            if part not in out.values or _is_own_symbol(out.values[part], part):
+                out.values[part] = value
         elif path.suffix == ".toml":
             out.problems.append(AnswerProblem(file=str(path), line=None,
                                               message=f"'{name}' is not a part of problem {problem.id}; ignored"))
     return out
+
+
+def _is_own_symbol(value: object, name: str) -> bool:
+    return getattr(value, "is_Symbol", False) and getattr(value, "name", None) == name
 
 
 def _binds(text: str, line: int, name: str) -> bool:

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from lagrade.compare.trajectory import ACCURACY, Accuracy
+from lagrade.credit import Credit
 from lagrade.reference import Mechanics, ReferenceCache
 from lagrade.result import Method, PartResult
 from lagrade.spec import Part, Problem
@@ -28,6 +29,9 @@ class Context:
     accuracy: Accuracy = field(default_factory=lambda: ACCURACY["default"])
     symbolic_seconds: float = 2.0
     points: int = 24
+    #: more specific feedback: which term is missing or extra (never the reference itself)
+    hints: bool = False
+    credit: Credit = field(default_factory=Credit)
 
     def mech(self, part: Part) -> Mechanics:
         return self.refs[part.system]
@@ -42,9 +46,13 @@ def result(part: Part, verdict: str, fraction: float, method: Method, feedback: 
                       max_score=part.weight, method=method, feedback=feedback)
 
 
-def graded(part: Part, fraction: float, method: Method, feedback: str) -> PartResult:
-    """Verdict from a score fraction: 1 correct, 0 incorrect, in between partial."""
+def graded(part: Part, fraction: float, method: Method, feedback: str, credit: Credit | None = None) -> PartResult:
+    """Verdict from a score fraction: 1 correct, 0 incorrect, in between partial.
+
+    With ``credit.per_equation`` off, anything short of 1 scores 0 (still reported as partial)."""
     fraction = min(max(fraction, 0.0), 1.0)
+    if credit is not None and not credit.per_equation and 0 < fraction < 1:
+        return result(part, "partial", 0.0, method, feedback)
     verdict = "correct" if fraction >= 1.0 - 1e-12 else ("incorrect" if fraction <= 1e-12 else "partial")
     return result(part, verdict, fraction, method, feedback)
 

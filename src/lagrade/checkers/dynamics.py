@@ -9,6 +9,7 @@ symbolic proof gives up; a wrong one is refuted by the states and explained by t
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
@@ -62,8 +63,11 @@ def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc)
     n = len(mech.names)
     stu = _lagrange_rates(lambda q_, qd_, t: student_acc(q_, qd_, t, params, extra), n)
     labels = [*mech.names, *(f"{x}'" for x in mech.names)]
-    return compare_runs(stu, _reference_lagrange(mech, params), np.concatenate([q, qd]), labels,
-                        mech.system.horizon, ctx.accuracy)
+    ref = _reference_lagrange(mech, params)
+    y0 = np.concatenate([q, qd])
+    comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
+    comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
+    return comparison
 
 
 def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rates) -> Comparison:
@@ -79,7 +83,28 @@ def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rate
         return student_rates(y[:n], y[n:], np.full(y.shape[1], t), params, extra)
 
     labels = [*mech.names, *(f"p_{x}" for x in mech.names)]
-    return compare_runs(stu, ref, np.concatenate([q, p]), labels, mech.system.horizon, ctx.accuracy)
+    y0 = np.concatenate([q, p])
+    comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
+    comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
+    return comparison
+
+
+@dataclass
+class TrajectoryCase:
+    """What it takes to integrate a part's motion again (for the ``--plot`` picture)."""
+
+    student: Callable
+    reference: Callable
+    y0: np.ndarray
+    labels: list[str]
+    horizon: float
+    accuracy: object
+
+
+def _cost(traj: Comparison) -> str:
+    acc = traj.case.accuracy if getattr(traj, "case", None) else None
+    tol = f"within rtol {acc.compare_rtol:g}, atol {acc.compare_atol:g}, " if acc is not None else ""
+    return f" ({tol}{traj.rhs_evals} evaluations, {traj.seconds:.2f} s)"
 
 
 def _decide(part: Part, proof: bool | None, traj: Comparison | None, note: str = "") -> PartResult:
@@ -89,13 +114,15 @@ def _decide(part: Part, proof: bool | None, traj: Comparison | None, note: str =
         return graded(part, 1.0, "symbolic", f"correct: proved equivalent to the reference.{extra}")
     if traj is not None and traj.agree:
         return graded(part, 1.0, "trajectory",
-                      f"correct: equal at every sampled state and {traj.describe()}.{extra}")
+                      f"correct: equal at every sampled state and {traj.describe()}{_cost(traj)}.{extra}")
     return graded(part, 1.0, "numeric", f"correct: equal at every sampled state.{extra}")
 
 
-def _wrong(part: Part, fraction: float, message: str, traj: Comparison | None) -> PartResult:
+def _wrong(part: Part, fraction: float, message: str, traj: Comparison | None, credit=None) -> PartResult:
     detail = f" {traj.describe()[0].upper()}{traj.describe()[1:]}." if traj is not None and not traj.agree else ""
-    return graded(part, fraction, "numeric", f"{message}{detail}")
+    res = graded(part, fraction, "numeric", f"{message}{detail}", credit)
+    res._trajectory = getattr(traj, "case", None)
+    return res
 
 
 def _lazy(build: Callable[[], Callable]) -> Callable:
@@ -199,7 +226,7 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
     if c is not None and np.all(np.abs(c) > 1e-9):
         same = np.allclose(c, c[0], rtol=1e-6)
         factor = f"{c[0]:.4g}" if same else "a factor that depends on the parameters"
-        return graded(part, 0.5, "numeric",
+        return graded(part, ctx.credit.scaled_lagrangian, "numeric",
                       f"your Lagrangian is the right one scaled by {factor}: it gives the same equations of motion, "
                       "but L = T - V fixes the scale (the momenta and H would be off by that factor).")
     message = _lagrangian_diagnosis(ctx, part, mech, L_s, E_s, pts, groups, per)
@@ -227,8 +254,51 @@ def _lagrangian_diagnosis(ctx, part, mech, L_s, E_s, pts, groups, per) -> str:
             return "Incorrect: " + message
     E_r = _el_matrix(mech.L, mech, pts, part)
     bad = [name for i, name in enumerate(mech.names) if not np.all(agree(E_s[i], E_r[i]))]
-    return ("Incorrect: the Lagrange equation your L gives for " + ", ".join(bad) +
-            " is not the true one (a term of T or V is missing or wrong).")
+    message = ("Incorrect: the Lagrange equation your L gives for " + ", ".join(bad) +
+               " is not the true one (a term of T or V is missing or wrong).")
+    if ctx.hints:
+        message += " " + term_hints(L_s, mech.L, mech)
+    return message
+
+
+def _terms(expr: sp.Expr, mech: Mechanics) -> dict[sp.Expr, sp.Expr]:
+    """Terms of an expanded L keyed by their non-numeric factor; constants dropped (they do nothing)."""
+    state = {*mech.s.q, *mech.s.qd, T}
+    out: dict[sp.Expr, sp.Expr] = {}
+    for term in sp.Add.make_args(sp.expand(sp.expand_trig(expr))):
+        if not term.free_symbols & state:
+            continue
+        coeff, rest = term.as_coeff_Mul()
+        out[rest] = out.get(rest, 0) + coeff
+    return {k: v for k, v in out.items() if v != 0}
+
+
+def _describe_term(term: sp.Expr, mech: Mechanics) -> str:
+    names = sorted({str(s) for s in term.free_symbols & {*mech.s.q, *mech.s.qd}})
+    kind = "kinetic" if term.free_symbols & set(mech.s.qd) else "potential"
+    return f"a {kind} term in {', '.join(n.replace('_d', chr(39)) for n in names)}"
+
+
+def term_hints(L_s: sp.Expr, L_ref: sp.Expr, mech: Mechanics) -> str:
+    """Which terms of the student's L are extra or off by a factor, and what kind of term is missing.
+
+    The student's own terms may be quoted; the reference's never are (only the variables they involve).
+    """
+    mine, ref = _terms(L_s, mech), _terms(L_ref, mech)
+    notes = []
+    for key, c in mine.items():
+        if key not in ref:
+            notes.append(f"your term {sp.sstr(c * key).replace('_d', chr(39))} should not be there")
+        elif not sp.simplify(c - ref[key]) == 0:
+            ratio = sp.nsimplify(c / ref[key])
+            what = "has the wrong sign" if ratio == -1 else f"is {ratio} times what it should be"
+            notes.append(f"your term {sp.sstr(c * key).replace('_d', chr(39))} {what}")
+    for key in ref:
+        if key not in mine:
+            notes.append(f"{_describe_term(key, mech)} is missing")
+    if not notes or len(notes) > 4:
+        return "Hint: compare T and V with the figure term by term."
+    return "Hint: " + "; ".join(notes) + "."
 
 
 # ----------------------------------------------------------------------------- equations of motion
@@ -263,14 +333,34 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
             proof = _prove_rows_equivalent(rows, mech, ctx)
         traj = None if proof else _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
         return _decide(part, proof, traj)
-    problems = []
-    for i in an.wrong:
-        problems.append(f"equation {i + 1} (the one mainly for {an.labels[i]}'') does not hold for the true motion")
+    named = _eom_mistake(part, mech, compiled, pts.args(args), list(mech.names))
+    problems = [] if named is None else [named.rstrip(".")]
+    for i in an.wrong if named is None else []:
+        where = f"the one mainly for {an.labels[i]}''" if an.labels[i] != "none" else "it has no acceleration in it"
+        problems.append(f"equation {i + 1} ({where}) does not hold for the true motion")
     if an.rank < an.n and not an.wrong:
         problems.append(f"your equations determine only {an.rank} of the {an.n} accelerations "
                         f"({', '.join(x + chr(39) * 2 for x in mech.names)}): an equation is missing or repeated")
     traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc)) if len(rows) >= an.n else None
-    return _wrong(part, an.fraction, _sentence(problems), traj)
+    return _wrong(part, an.fraction, named or _sentence(problems), traj, ctx.credit)
+
+
+def _eom_mistake(part: Part, mech: Mechanics, compiled: CompiledRows, argv, labels) -> str | None:
+    """The message of a named mistake whose equations define the same accelerations as the student's."""
+    for mistake in part.mistakes:
+        texts = mistake.answer if isinstance(mistake.answer, list) else [mistake.answer]
+        try:
+            rows = []
+            for text in texts:
+                e = mech.parse(str(text), part.symbols)
+                rows.append(e.lhs - e.rhs if isinstance(e, sp.Equality) else e)
+            wrong = CompiledRows(rows, mech.s.qdd, [*mech.s.q, *mech.s.qd, T, *mech.params,
+                                                    *(sp.Symbol(x) for x in part.symbols)])
+            if analyse_rows(compiled, argv, wrong.solve(argv), labels).fraction >= 1.0:
+                return mistake.message
+        except Exception:  # noqa: BLE001  (a mistake that cannot be read is simply not matched)
+            continue
+    return None
 
 
 def _prove_rows_equivalent(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -> bool | None:
@@ -329,12 +419,13 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
         nonlinear = not np.allclose(g, lin, rtol=1e-6, atol=1e-9 * scale_of(g))
         note = ("These are the exact (nonlinear) equations; they linearize to the right small-oscillation "
                 "equations, which were asked." if nonlinear else "")
-        return graded(part, 1.0, "numeric", ("correct: your equations are the small-oscillation equations about "
-                                             "equilibrium. " + note).strip())
+        return graded(part, ctx.credit.nonlinear_for_linearized if nonlinear else 1.0, "numeric",
+                      ("correct: your equations are the small-oscillation equations about equilibrium. "
+                       + note).strip())
     wrong = [str(i + 1) for i, ok in enumerate(consistent) if not ok]
     msg = (f"equation(s) {', '.join(wrong)} do not agree with the linearized equations of motion about "
            f"equilibrium" if wrong else f"your equations determine only {rank} of the {n} accelerations")
-    return graded(part, fraction, "numeric", "Incorrect: " + msg + ".")
+    return graded(part, fraction, "numeric", "Incorrect: " + msg + ".", ctx.credit)
 
 
 # ----------------------------------------------------------------------------- the Hamiltonian
@@ -466,4 +557,4 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
         problems.append(f"your equations determine only {an.rank} of the {an.n} rates "
                         f"({', '.join(labels)}): Hamilton's equations are 2n first-order equations")
     traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates)) if len(rows) >= an.n else None
-    return _wrong(part, an.fraction, _sentence(problems), traj)
+    return _wrong(part, an.fraction, _sentence(problems), traj, ctx.credit)

@@ -64,11 +64,13 @@ def check_conserved(ctx: Context, part: Part, value: object) -> PartResult:
                 ok = False
                 break
         covered += ok
-    fraction = max(covered - (len(items) - len(good)), 0) / len(refs)
+    wrong = len(items) - len(good) if ctx.credit.penalize_extra_entries else 0
+    fraction = max(covered - wrong, 0) / len(refs)
     if covered < len(refs):
         notes.append(f"{len(refs) - covered} of the {len(refs)} conserved quantities of this motion "
                      f"{'is' if len(refs) - covered == 1 else 'are'} missing")
-    return graded(part, fraction, "numeric", "correct." if not notes else "Incorrect: " + "; ".join(notes) + ".")
+    return graded(part, fraction, "numeric", "correct." if not notes else "Incorrect: " + "; ".join(notes) + ".",
+                  ctx.credit)
 
 
 def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:

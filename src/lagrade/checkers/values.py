@@ -38,13 +38,15 @@ def _read(ctx: Context, part: Part, mech: Mechanics, value: object) -> sp.Expr:
     return read_sympy(expr, part, mech, plain_coordinates=True, momenta=True, extra=extra)
 
 
-def _evaluate(expr: sp.Expr, pts: Points, syms: list[sp.Symbol]) -> np.ndarray:
+def _evaluate(expr: sp.Expr, pts: Points, syms: list[sp.Symbol] | None = None) -> np.ndarray:
+    """Value at every point; symbols the points lack (virtual displacements delta_q) get random values,
+    kept in ``pts`` so that the student's expression and the reference see the same ones."""
     missing = [s for s in expr.free_symbols if s not in pts.values]
-    if missing:  # e.g. virtual displacements delta_q: random values too
+    if missing:
         rng = rng_for("extra", *sorted(str(m) for m in missing))
         for m in missing:
             pts.values[m] = rng.uniform(-1, 1, pts.K)
-        syms = list(pts.values)
+    syms = list(pts.values)
     return compile_exprs([expr], syms)(*pts.args(syms))[0]
 
 
@@ -125,7 +127,7 @@ def check_expression(ctx: Context, part: Part, value: object) -> PartResult:
         feedback = "correct." if not notes else "Incorrect: " + "; ".join(notes) + "."
         if notes:
             feedback = _dict_mistake_message(ctx, part, mech, given, pts, syms) or feedback
-        return graded(part, fraction, method, feedback)
+        return graded(part, fraction, method, feedback, ctx.credit)
     if isinstance(value, sp.Equality) and _is_definition(value, mech, part):
         value = value.rhs
     ok, method, why = compare_scalar(ctx, part, mech, _read(ctx, part, mech, value),
@@ -185,13 +187,13 @@ def check_expression_set(ctx: Context, part: Part, value: object) -> PartResult:
             matched += 1
             used.add(j)
     extra = len(studs) - len(used)
-    fraction = max(matched - extra, 0) / len(refs)
+    fraction = max(matched - (extra if ctx.credit.penalize_extra_entries else 0), 0) / len(refs)
     if fraction >= 1.0:
         return graded(part, 1.0, "numeric", "correct.")
     notes = [f"{matched} of the {len(refs)} values are right"]
     if extra:
         notes.append(f"{extra} of yours match none")
-    return graded(part, fraction, "numeric", "Incorrect: " + ", ".join(notes) + ".")
+    return graded(part, fraction, "numeric", "Incorrect: " + ", ".join(notes) + ".", ctx.credit)
 
 
 def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
@@ -251,10 +253,12 @@ def check_names(ctx: Context, part: Part, value: object) -> PartResult:
     want = set(part.reference)
     right = len(given & want)
     wrong = sorted(given - want)
-    fraction = max(right - len(wrong), 0) / max(len(want), 1) if want else float(not given)
+    penalty = len(wrong) if ctx.credit.penalize_extra_entries else 0
+    fraction = max(right - penalty, 0) / max(len(want), 1) if want else float(not given)
     notes = []
     if want - given:
         notes.append(f"{len(want - given)} missing")
     if wrong:
         notes.append(f"{', '.join(wrong)} {'is' if len(wrong) == 1 else 'are'} not")
-    return graded(part, fraction, "exact", "correct." if not notes else "Incorrect: " + "; ".join(notes) + ".")
+    return graded(part, fraction, "exact", "correct." if not notes else "Incorrect: " + "; ".join(notes) + ".",
+                  ctx.credit)

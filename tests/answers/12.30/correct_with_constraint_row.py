@@ -1,6 +1,5 @@
-# The Cartesian equation along the wire plus the constraint equation itself, as a careful student lists them.
-# ENGINE PROBLEM: the constraint row x*sin(wt) - y*cos(wt) becomes x*sin(wt) - x*tan(wt)*cos(wt) after y is
-# substituted; numerically ~1e-16, but the row's own scale is also ~1e-16, so it is judged "does not hold".
+# The Cartesian equation along the wire plus the constraint equation itself, as a careful student lists them
+# (after y = x*tan(wt) is substituted the constraint row is x*sin(wt) - x*tan(wt)*cos(wt), zero only up to rounding).
 from lagrade.answer import *
 
 m, omega = parameters("m omega")

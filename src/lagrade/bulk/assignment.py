@@ -1,0 +1,166 @@
+"""The assignment file: which problems, their weights, per-part weights, accuracy and limits.
+
+```toml
+name = "hw7"                       # the column name in the gradebook exports
+title = "Homework 7"               # optional
+accuracy = "default"               # fast | default | strict (trajectory tolerances)
+
+[limits]                           # optional, per submission (the sandbox of the engine)
+cpu_seconds = 10
+wall_seconds = 20
+memory_mb = 1024
+grading_seconds = 120              # time to grade the values once the file has run
+
+[[problems]]
+id = "12.22"
+weight = 5                         # points for this problem (default: the problem's own total)
+parts = { L = 2, eom = 1 }         # optional relative weights of parts (default: the problem file's)
+```
+
+A student's points on a problem are ``weight * sum(w_part * fraction_part) / sum(w_part)``, where
+``fraction_part`` is the engine's score of the part over its maximum.  Weights only change the
+points, never the grading, so changing them does not regrade anything.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import tomllib
+from pathlib import Path
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+
+from lagrade.answers.sandbox import SandboxLimits
+
+
+class AssignmentError(ValueError):
+    """The assignment file cannot be used; the message says why."""
+
+
+class Limits(BaseModel):
+    """Per-submission limits: the engine's sandbox limits plus a bound on grading the values."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    cpu_seconds: float = Field(10, gt=0)
+    wall_seconds: float = Field(20, gt=0)
+    memory_mb: int = Field(1024, gt=0)
+    grading_seconds: float = Field(120, gt=0)
+
+    def sandbox(self) -> SandboxLimits:
+        return SandboxLimits(cpu_seconds=self.cpu_seconds, wall_seconds=self.wall_seconds,
+                             memory_mb=self.memory_mb)
+
+
+class AssignedProblem(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    id: str
+    weight: float | None = Field(None, ge=0)
+    parts: dict[str, float] = Field(default_factory=dict)
+
+    @model_validator(mode="after")
+    def _positive_parts(self) -> "AssignedProblem":
+        bad = [k for k, v in self.parts.items() if v < 0]
+        if bad:
+            raise ValueError(f"negative part weight for {', '.join(bad)}")
+        return self
+
+
+class Assignment(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    name: str = "assignment"
+    title: str = ""
+    accuracy: Literal["fast", "default", "strict"] = "default"
+    limits: Limits = Limits()
+    problems: list[AssignedProblem] = Field(min_length=1)
+
+    @model_validator(mode="after")
+    def _unique(self) -> "Assignment":
+        ids = [p.id for p in self.problems]
+        dup = sorted({i for i in ids if ids.count(i) > 1})
+        if dup:
+            raise ValueError(f"problem listed twice: {', '.join(dup)}")
+        return self
+
+    # ------------------------------------------------------------------ identity
+
+    def canonical_json(self) -> str:
+        return json.dumps(self.model_dump(mode="json"), sort_keys=True, separators=(",", ":"))
+
+    def grading_hash(self, problem_id: str, problem_source: str) -> str:
+        """What a stored grade of ``problem_id`` depends on, besides the file and the grader version.
+
+        The problem file itself (an instructor fixing a reference regrades that problem), the
+        accuracy setting and the limits; not the weights, which only scale points.
+        """
+        key = json.dumps({"problem": problem_id, "source": problem_source, "accuracy": self.accuracy,
+                          "limits": self.limits.model_dump(mode="json")}, sort_keys=True)
+        return hashlib.sha256(key.encode()).hexdigest()[:16]
+
+    def problem(self, pid: str) -> AssignedProblem:
+        for p in self.problems:
+            if p.id == pid:
+                return p
+        raise KeyError(pid)
+
+    @property
+    def ids(self) -> list[str]:
+        return [p.id for p in self.problems]
+
+
+def load_assignment(path: Path) -> Assignment:
+    try:
+        data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise AssignmentError(f"{path}: {exc.strerror or exc}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise AssignmentError(f"{path}: not valid TOML ({exc})") from None
+    return parse_assignment(data, str(path))
+
+
+def parse_assignment(data: dict, where: str = "assignment") -> Assignment:
+    try:
+        return Assignment.model_validate(data)
+    except ValidationError as exc:
+        lines = [f"{where}: {'.'.join(str(x) for x in e['loc']) or '(top)'}: {e['msg']}" for e in exc.errors()]
+        raise AssignmentError("\n".join(lines)) from None
+
+
+def check_against_problems(assignment: Assignment, problems_dirs: tuple[Path, ...] = ()) -> None:
+    """Every problem id exists and every per-part weight names a part of its problem."""
+    from lagrade.library import load_problem
+    from lagrade.spec import SpecError
+
+    errors = []
+    for ap in assignment.problems:
+        try:
+            problem = load_problem(ap.id, problems_dirs)
+        except SpecError as exc:
+            errors.append(str(exc))
+            continue
+        names = {p.name for p in problem.parts}
+        unknown = sorted(set(ap.parts) - names)
+        if unknown:
+            errors.append(f"problem {ap.id} has no part {', '.join(unknown)} (its parts: {', '.join(sorted(names))})")
+    if errors:
+        raise AssignmentError("\n".join(errors))
+
+
+def points(assigned: AssignedProblem, parts: list[dict], default_total: float) -> tuple[float, float]:
+    """(points, points possible) of one problem from its stored parts (``part``, ``score``, ``max_score``).
+
+    ``default_total`` is the problem's own maximum (used when the assignment gives no weight).
+    """
+    total = assigned.weight if assigned.weight is not None else default_total
+    if not parts:
+        return 0.0, total
+    weights = {p["part"]: assigned.parts.get(p["part"], p["max_score"]) for p in parts}
+    denom = sum(weights.values())
+    if denom <= 0:
+        return 0.0, total
+    frac = sum(weights[p["part"]] * (p["score"] / p["max_score"] if p["max_score"] else 0.0) for p in parts)
+    return round(total * frac / denom, 6), total

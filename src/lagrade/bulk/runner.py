@@ -1,0 +1,292 @@
+"""Grading a class folder: what needs grading, the process pool (default) or a Dask cluster.
+
+The coordinator (this process) scans the folder, asks the store which submissions are new or
+changed, sends those to grader processes (:mod:`lagrade.bulk.worker`) and writes every result in
+its own transaction the moment it arrives. Grader processes are warmed once (problems loaded,
+references derived) and reused for every submission; one that overruns a hard deadline or dies is
+replaced, and that submission gets a verdict saying so.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import threading
+import time
+from collections import deque
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
+from multiprocessing.connection import wait
+from pathlib import Path
+from typing import Any
+
+from lagrade.bulk.assignment import Assignment, check_against_problems
+from lagrade.bulk.layout import Layout, Submission, scan
+from lagrade.bulk.store import Key, Store
+from lagrade.bulk.worker import GraderProcess, WorkerDied, failed_result, hard_deadline
+
+ResultCallback = Callable[[dict[str, Any]], None]
+
+
+def grader_version() -> str:
+    from lagrade import __version__
+
+    return __version__
+
+
+@dataclass
+class RunReport:
+    total: int = 0          # submissions found
+    todo: int = 0           # graded in this run
+    up_to_date: int = 0     # already in the database with the same keys
+    removed: int = 0        # results dropped because their file is gone
+    failed: int = 0         # graded in this run with outcome 'failed'
+    skipped: list = field(default_factory=list)
+    seconds: float = 0.0
+    workers: int = 0
+    backend: str = "processes"
+
+
+@dataclass
+class Plan:
+    assignment: Assignment
+    layout: Layout
+    sources: dict[str, str]                    # problem id -> problem TOML text (sent to graders)
+    parts: dict[str, list[tuple[str, float]]]  # problem id -> [(part, weight)]
+    keys: dict[str, str]                       # problem id -> grading hash
+    version: str
+
+    def key(self, sub: Submission) -> Key:
+        return Key(sub.sha256, self.keys[sub.problem], self.version)
+
+    def job(self, sub: Submission) -> dict[str, Any]:
+        return {"student": sub.student, "problem": sub.problem, "suffix": sub.suffix, "data": sub.data,
+                "accuracy": self.assignment.accuracy, "limits": self.assignment.limits.model_dump(),
+                "parts": self.parts[sub.problem], "file_hash": sub.sha256}
+
+
+def plan(root: Path, assignment: Assignment, problems_dirs: tuple[Path, ...] = (),
+         version: str | None = None) -> Plan:
+    from lagrade.library import load_problem, problem_path
+
+    check_against_problems(assignment, problems_dirs)
+    sources, parts, keys = {}, {}, {}
+    for pid in assignment.ids:
+        path = problem_path(pid, problems_dirs)
+        sources[pid] = path.read_text(encoding="utf-8")
+        parts[pid] = [(p.name, p.weight) for p in load_problem(pid, problems_dirs).parts]
+        keys[pid] = assignment.grading_hash(pid, sources[pid])
+    return Plan(assignment, scan(root, assignment.ids), sources, parts, keys, version or grader_version())
+
+
+def problem_totals(p: Plan) -> dict[str, float]:
+    return {pid: float(sum(w for _, w in parts)) for pid, parts in p.parts.items()}
+
+
+def grade_folder(root: Path, assignment: Assignment, db: Path, *, workers: int | None = None,
+                 scheduler: Any = None, problems_dirs: tuple[Path, ...] = (), version: str | None = None,
+                 on_start: Callable[[int, int], None] | None = None, on_result: ResultCallback | None = None,
+                 regrade: bool = False) -> RunReport:
+    """Grade every new or changed submission under ``root`` into ``db``; see the module docstring."""
+    start = time.monotonic()
+    p = plan(root, assignment, problems_dirs, version)
+    report = RunReport(total=len(p.layout.submissions), skipped=p.layout.skipped)
+    with Store(db, lock=True) as store:
+        store.set_meta("assignment", assignment.canonical_json())
+        store.set_meta("problem_totals", json.dumps(problem_totals(p)))
+        store.set_meta("root", str(Path(root).resolve()))
+        store.set_meta("grader_version", p.version)
+        present = {(s.student, s.problem) for s in p.layout.submissions}
+        report.removed = store.sync_layout(p.layout.students, [(s.path, s.reason) for s in p.layout.skipped], present)
+        stored = store.keys()
+        todo = [s for s in p.layout.submissions if regrade or stored.get((s.student, s.problem)) != p.key(s)]
+        report.todo, report.up_to_date = len(todo), report.total - len(todo)
+        by_key = {(s.student, s.problem): s for s in todo}
+        if regrade:  # forget the stored keys so that record() writes again
+            with store.transaction():
+                store.db.executemany("DELETE FROM submissions WHERE student = ? AND problem = ?", list(by_key))
+
+        def done(result: dict[str, Any]) -> None:
+            sub = by_key[(result["student"], result["problem"])]
+            store.record(student=sub.student, problem=sub.problem, path=f"{sub.student}/{sub.path.name}",
+                         key=p.key(sub), outcome=result["outcome"], status=result["status"], reason=result["reason"],
+                         score=result["score"], max_score=result["max_score"], problems=result["problems"],
+                         stdout=result.get("stdout", ""), source=sub.data.decode("utf-8", "replace"),
+                         seconds=result["seconds"], parts=result["parts"])
+            if result["outcome"] == "failed":
+                report.failed += 1
+            if on_result:
+                on_result(result)
+
+        if on_start:
+            on_start(len(todo), report.up_to_date)
+        jobs = [p.job(s) for s in todo]
+        if scheduler is not None:
+            report.backend = "dask"
+            report.workers = run_dask(jobs, p.sources, scheduler, done)
+        elif jobs:
+            report.workers = min(workers or os.cpu_count() or 1, len(jobs))
+            run_local(jobs, p.sources, report.workers, done)
+    report.seconds = time.monotonic() - start
+    return report
+
+
+# =========================================================================== local process pool
+
+def run_local(jobs: Iterable[dict[str, Any]], sources: dict[str, str], workers: int, done: ResultCallback) -> None:
+    """Grade ``jobs`` on ``workers`` warmed grader processes; ``done`` gets each result as it arrives."""
+    queue = deque(jobs)
+    graders = [GraderProcess(sources) for _ in range(max(1, min(workers, len(queue))))]
+    try:
+        while queue or any(g.job is not None for g in graders):
+            for g in graders:
+                if g.job is None and queue:
+                    g.submit(queue.popleft())
+            busy = [g for g in graders if g.job is not None]
+            ready = wait([g.recv_conn for g in busy], timeout=1.0)
+            now = time.monotonic()
+            for i, g in enumerate(graders):
+                if g.job is None:
+                    continue
+                job = g.job
+                if g.recv_conn in ready:
+                    try:
+                        msg = g.recv_conn.recv()
+                    except (EOFError, OSError):
+                        msg = None
+                    if msg is None:
+                        g.kill()
+                        graders[i] = GraderProcess(sources)
+                        done(failed_result(job, job["parts"], "grader-crash",
+                                           "the grader process died while grading this file (it may have used "
+                                           "too much memory); please report it", now - g.started))
+                    elif "ready" in msg:
+                        if not msg["ready"]:
+                            raise WorkerDied(f"a grader process could not start: {msg.get('error')}")
+                        g.ready, g.started = True, now
+                    else:
+                        g.job = None
+                        done(msg)
+                elif g.ready and now - g.started > hard_deadline(job["limits"]):
+                    g.kill()
+                    graders[i] = GraderProcess(sources)
+                    done(failed_result(job, job["parts"], "grader-timeout",
+                                       f"grading this file did not finish in {hard_deadline(job['limits']):g} s",
+                                       now - g.started))
+                elif not g.ready and now - g.started > 600:
+                    raise WorkerDied("a grader process did not warm up in 10 minutes")
+    finally:
+        for g in graders:
+            if g.job is None:
+                g.stop()
+            else:
+                g.kill()
+
+
+# =========================================================================== Dask
+
+_DASK_LOCK = threading.Lock()
+_DASK_IDLE: dict[str, list[GraderProcess]] = {}
+
+
+def _sources_key(sources: dict[str, str]) -> str:
+    return hashlib.sha256(json.dumps(sources, sort_keys=True).encode()).hexdigest()[:16]
+
+
+def _take(sources: dict[str, str]) -> GraderProcess:
+    key = _sources_key(sources)
+    with _DASK_LOCK:
+        for other in [k for k in _DASK_IDLE if k != key]:  # another assignment's graders: retire them
+            for g in _DASK_IDLE.pop(other):
+                g.stop()
+        idle = _DASK_IDLE.setdefault(key, [])
+        if idle:
+            return idle.pop()
+    # not the main thread of a Dask worker: no parent-death signal (it follows the creating thread)
+    return GraderProcess(sources, parent_death_signal=False)
+
+
+def _give_back(sources: dict[str, str], g: GraderProcess) -> None:
+    with _DASK_LOCK:
+        _DASK_IDLE.setdefault(_sources_key(sources), []).append(g)
+
+
+def dask_warm(sources: dict[str, str], count: int) -> int:
+    """Run on every Dask worker before grading: start and warm its grader processes."""
+    graders = [_take(sources) for _ in range(count)]
+    for g in graders:
+        g.wait_ready()
+        _give_back(sources, g)
+    return os.getpid()
+
+
+def dask_stop() -> int:
+    with _DASK_LOCK:
+        graders = [g for gs in _DASK_IDLE.values() for g in gs]
+        _DASK_IDLE.clear()
+    for g in graders:
+        g.stop()
+    return len(graders)
+
+
+def dask_grade(job: dict[str, Any], sources: dict[str, str]) -> dict[str, Any]:
+    """The Dask task: grade one job in one of this worker's warmed grader processes."""
+    g = _take(sources)
+    start = time.monotonic()
+    try:
+        g.wait_ready()
+        g.submit(job)
+        result = g.result(timeout=hard_deadline(job["limits"]))
+    except TimeoutError:
+        g.kill()
+        return failed_result(job, job["parts"], "grader-timeout",
+                             f"grading this file did not finish in {hard_deadline(job['limits']):g} s",
+                             time.monotonic() - start)
+    except WorkerDied:
+        g.kill()
+        return failed_result(job, job["parts"], "grader-crash",
+                             "the grader process died while grading this file; please report it",
+                             time.monotonic() - start)
+    _give_back(sources, g)
+    return result
+
+
+def run_dask(jobs: list[dict[str, Any]], sources: dict[str, str], scheduler: Any, done: ResultCallback) -> int:
+    """Grade ``jobs`` on a Dask cluster: ``scheduler`` is an address, a ``Client`` or a cluster object."""
+    try:
+        from distributed import Client, as_completed
+    except ImportError:  # pragma: no cover
+        raise RuntimeError("grading on a Dask cluster needs 'pip install lagrade[dask]'") from None
+
+    own = not isinstance(scheduler, Client)
+    client = Client(scheduler) if own else scheduler
+    try:
+        info = client.scheduler_info(n_workers=-1) if _accepts_n_workers(client) else client.scheduler_info()
+        threads = {addr: w.get("nthreads", 1) for addr, w in info["workers"].items()}
+        if not jobs:
+            return sum(threads.values())
+        for addr, n in threads.items():
+            client.run(dask_warm, sources, n, workers=[addr])
+        src = client.scatter(sources, broadcast=True)
+        futures = [client.submit(dask_grade, job, src, pure=False, retries=1) for job in jobs]
+        by_future = dict(zip(futures, jobs))
+        for fut in as_completed(futures):
+            job = by_future.pop(fut)
+            try:
+                result = fut.result()
+            except Exception as exc:  # noqa: BLE001  (a Dask worker lost for good)
+                result = failed_result(job, job["parts"], "grader-crash",
+                                       f"the Dask worker grading this file failed ({type(exc).__name__}: {exc})", 0.0)
+            done(result)
+            fut.release()
+        return sum(threads.values())
+    finally:
+        if own:
+            client.close()
+
+
+def _accepts_n_workers(client: Any) -> bool:
+    import inspect
+
+    return "n_workers" in inspect.signature(client.scheduler_info).parameters

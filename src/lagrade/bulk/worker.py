@@ -1,0 +1,332 @@
+"""Grading one submission in a warmed grader process, and the process that does it.
+
+A grader process (``python -m lagrade.bulk.worker``) is started once per core (or per Dask worker
+thread), loads the assignment's problems from their TOML text and derives their references once,
+then grades jobs sent over a pipe until the pipe closes. Grading runs on the process's main thread,
+so the engine's time-bounded proofs stay bounded, and under a CPU-time bound of its own
+(``ITIMER_PROF``; the engine uses ``ITIMER_REAL`` for its proofs). The student's code itself runs
+further down, in the engine's sandbox (a forked child with CPU, memory and wall-clock limits).
+The coordinator kills a grader process that overruns a hard deadline and starts a new one.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from multiprocessing.connection import Connection, wait
+from pathlib import Path
+from typing import Any
+
+#: kinds of status a submission gets; ``ok`` means the file ran (its parts carry the verdicts)
+STATUSES = ("ok", "error", "syntax", "rejected", "timeout", "memory", "crashed", "grader-timeout",
+            "grader-crash")
+
+MATHML_MAX_CHARS = 4000
+
+
+class _GradingOutOfTime(BaseException):
+    """Raised by SIGPROF; a BaseException so that the engine's per-part guards do not swallow it."""
+
+
+# =========================================================================== in the grader process
+
+class Grader:
+    """The warmed state of a grader process: problems loaded, references derived."""
+
+    def __init__(self, problems: dict[str, str]) -> None:
+        from lagrade.grade import references
+        from lagrade.library import load_problem
+
+        self.dir = Path(tempfile.mkdtemp(prefix="lagrade-grader-"))
+        (self.dir / "problems").mkdir()
+        self.problems = {}
+        for pid, text in problems.items():
+            path = self.dir / "problems" / f"{pid}.toml"
+            path.write_text(text, encoding="utf-8")
+            problem = load_problem(path)
+            refs = references(problem)
+            for system in problem.systems:
+                refs[system.key]
+            self.problems[pid] = problem
+
+    def close(self) -> None:
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def grade(self, job: dict[str, Any]) -> dict[str, Any]:
+        from lagrade.answers.load import load_answer
+        from lagrade.answers.sandbox import SandboxLimits
+        from lagrade.grade import grade_values
+
+        start = time.monotonic()
+        problem = self.problems[job["problem"]]
+        limits = job["limits"]
+        work = Path(tempfile.mkdtemp(prefix="lagrade-job-", dir=self.dir))
+        path = work / f"{job['problem']}{job['suffix']}"
+        path.write_bytes(job["data"])
+        previous = signal.signal(signal.SIGPROF, _on_sigprof)
+        signal.setitimer(signal.ITIMER_PROF, limits["grading_seconds"])
+        try:
+            loaded = load_answer(path, problem, SandboxLimits(cpu_seconds=limits["cpu_seconds"],
+                                                               wall_seconds=limits["wall_seconds"],
+                                                               memory_mb=limits["memory_mb"]))
+            result = grade_values(problem, loaded, job["accuracy"])
+            parts = []
+            for p in result.parts:
+                row = p.model_dump(exclude={"read_as"})
+                if p.part in loaded.values:
+                    row["answer_text"], row["answer_mathml"] = _show(loaded.values[p.part])
+                parts.append(row)
+        except _GradingOutOfTime:
+            return failed_result(job, problem_parts(problem), "grader-timeout",
+                                 f"grading this answer took longer than {limits['grading_seconds']:g} s of CPU time "
+                                 f"(the expressions are too large to compare)", time.monotonic() - start)
+        finally:
+            signal.setitimer(signal.ITIMER_PROF, 0)
+            signal.signal(signal.SIGPROF, previous)
+            shutil.rmtree(work, ignore_errors=True)
+        unusable = loaded.fatal is not None and not loaded.values
+        reason = str(loaded.fatal) if loaded.fatal is not None else ""
+        return {
+            "student": job["student"], "problem": job["problem"],
+            "outcome": "failed" if unusable else "graded",
+            "status": _status(reason) if reason else "ok",
+            "reason": reason, "score": result.score, "max_score": result.max_score,
+            "problems": result.problems, "parts": parts, "seconds": time.monotonic() - start,
+        }
+
+
+def _on_sigprof(signum, frame) -> None:  # noqa: ARG001
+    signal.setitimer(signal.ITIMER_PROF, 0)
+    raise _GradingOutOfTime()
+
+
+def _status(reason: str) -> str:
+    r = reason.lower()
+    if "ran longer than" in r:
+        return "timeout"
+    if "memory" in r:
+        return "memory"
+    if "crashed" in r or "could not be run" in r:
+        return "crashed"
+    if "syntax error" in r or "cannot parse" in r or "not valid utf-8" in r:
+        return "syntax"
+    if "not allowed" in r or "refused" in r or "larger than" in r:
+        return "rejected"
+    return "error"
+
+
+def _show(value: Any) -> tuple[str | None, str | None]:
+    """The value as text and as presentation MathML (None when too large or unprintable)."""
+    try:
+        text = str(value)
+    except Exception:  # noqa: BLE001
+        return None, None
+    if len(text) > MATHML_MAX_CHARS:
+        return text[:MATHML_MAX_CHARS] + " ...", None
+    try:
+        return text, _mathml(value)
+    except Exception:  # noqa: BLE001
+        return text, None
+
+
+def _mathml(value: Any) -> str:
+    import sympy as sp
+    from sympy.printing.mathml import mathml
+
+    def one(v: Any) -> str:
+        if isinstance(v, (list, tuple)):
+            return "<mrow><mo>[</mo>" + "<mo>,</mo>".join(one(x) for x in v) + "<mo>]</mo></mrow>"
+        if isinstance(v, dict):
+            items = [f"<mrow>{one(k) if not isinstance(k, str) else '<mi>' + _esc(k) + '</mi>'}<mo>:</mo>{one(x)}</mrow>"
+                     for k, x in v.items()]
+            return "<mrow><mo>{</mo>" + "<mo>,</mo>".join(items) + "<mo>}</mo></mrow>"
+        if isinstance(v, bool):
+            return f"<mi>{v}</mi>"
+        if isinstance(v, str):
+            return f"<mtext>{_esc(v)}</mtext>"
+        return mathml(sp.sympify(v) if isinstance(v, (int, float)) else v, printer="presentation")
+
+    return one(value)
+
+
+def _esc(s: str) -> str:
+    return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def problem_parts(problem) -> list[tuple[str, float]]:
+    return [(p.name, p.weight) for p in problem.parts]
+
+
+def failed_result(job: dict[str, Any], parts: list[tuple[str, float]], status: str, reason: str,
+                  seconds: float) -> dict[str, Any]:
+    """A submission that could not be graded: every part invalid with the reason, score 0."""
+    return {
+        "student": job["student"], "problem": job["problem"], "outcome": "failed", "status": status,
+        "reason": reason, "score": 0.0, "max_score": float(sum(w for _, w in parts)), "problems": [reason],
+        "parts": [{"part": name, "verdict": "invalid", "score": 0.0, "max_score": w, "method": "exact",
+                   "feedback": f"not graded: {reason}"} for name, w in parts],
+        "seconds": seconds,
+    }
+
+
+def serve(conn: Any, parent_death_signal: bool = True) -> None:
+    """The grader process's loop: warm up from the first message, then grade until EOF."""
+    if parent_death_signal:
+        _die_with_parent()
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the coordinator's business
+    try:
+        hello = conn.recv()
+    except (EOFError, OSError):
+        return
+    try:
+        grader = Grader(hello["problems"])
+        conn.send({"ready": True, "pid": os.getpid()})
+    except Exception as exc:  # noqa: BLE001
+        conn.send({"ready": False, "error": f"{type(exc).__name__}: {exc}"})
+        return
+    try:
+        while True:
+            try:
+                job = conn.recv()
+            except (EOFError, OSError):
+                return
+            try:
+                out = grader.grade(job)
+            except Exception as exc:  # noqa: BLE001  (an engine bug fails this submission only)
+                problem = grader.problems.get(job.get("problem"))
+                out = failed_result(job, problem_parts(problem) if problem else [], "grader-crash",
+                                    f"lagrade could not grade this file ({type(exc).__name__}: {exc}); "
+                                    f"please report it", 0.0)
+            conn.send(out)
+    finally:
+        grader.close()
+
+
+def _die_with_parent() -> None:
+    try:
+        import ctypes
+
+        ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, signal.SIGKILL, 0, 0, 0)  # PR_SET_PDEATHSIG
+        if os.getppid() == 1:
+            os._exit(0)
+    except Exception:  # noqa: BLE001
+        pass
+
+
+# =========================================================================== the coordinator's handle
+
+class WorkerDied(RuntimeError):
+    pass
+
+
+class GraderProcess:
+    """A grader process seen from the coordinator: start, warm, send a job, wait, kill."""
+
+    def __init__(self, problems: dict[str, str], *, parent_death_signal: bool = True) -> None:
+        down_r, down_w = os.pipe()   # coordinator -> grader
+        up_r, up_w = os.pipe()       # grader -> coordinator
+        env = dict(os.environ)
+        debug = bool(env.get("LAGRADE_DEBUG"))
+        self.proc = subprocess.Popen(
+            [sys.executable, "-m", "lagrade.bulk.worker", str(down_r), str(up_w), "1" if parent_death_signal else "0"],
+            pass_fds=(down_r, up_w), stdin=subprocess.DEVNULL,
+            stdout=None if debug else subprocess.DEVNULL, stderr=None if debug else subprocess.DEVNULL,
+            env=env, close_fds=True)
+        os.close(down_r)
+        os.close(up_w)
+        self.send_conn = Connection(down_w, readable=False)
+        self.recv_conn = Connection(up_r, writable=False)
+        self.job: dict[str, Any] | None = None
+        self.started = 0.0
+        self.ready = False
+        self.send_conn.send({"problems": problems})
+
+    @property
+    def pid(self) -> int:
+        return self.proc.pid
+
+    def wait_ready(self, timeout: float = 600) -> None:
+        if self.ready:
+            return
+        msg = self._recv(timeout)
+        if not msg.get("ready"):
+            raise WorkerDied(f"a grader process could not start: {msg.get('error')}")
+        self.ready = True
+
+    def submit(self, job: dict[str, Any]) -> None:
+        self.job, self.started = job, time.monotonic()
+        self.send_conn.send(job)
+
+    def fileno(self) -> int:
+        return self.recv_conn.fileno()
+
+    def poll(self) -> bool:
+        return self.recv_conn.poll()
+
+    def _recv(self, timeout: float) -> dict[str, Any]:
+        if not wait([self.recv_conn], timeout):
+            raise TimeoutError
+        try:
+            return self.recv_conn.recv()
+        except (EOFError, OSError):
+            raise WorkerDied("the grader process died") from None
+
+    def result(self, timeout: float | None = None) -> dict[str, Any]:
+        msg = self._recv(timeout if timeout is not None else 1e9)
+        if not self.ready:  # the readiness message comes first
+            if not msg.get("ready"):
+                raise WorkerDied(f"a grader process could not start: {msg.get('error')}")
+            self.ready = True
+            msg = self._recv(timeout if timeout is not None else 1e9)
+        self.job = None
+        return msg
+
+    def kill(self) -> None:
+        try:
+            self.proc.kill()
+        except ProcessLookupError:
+            pass
+        self.proc.wait()
+        self.close()
+
+    def close(self) -> None:
+        for c in (self.send_conn, self.recv_conn):
+            try:
+                c.close()
+            except OSError:
+                pass
+
+    def stop(self) -> None:
+        self.close()  # EOF ends the loop
+        try:
+            self.proc.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            self.kill()
+
+
+def hard_deadline(limits: dict[str, float]) -> float:
+    """Seconds after which the coordinator kills a grader process stuck on one job."""
+    return limits["wall_seconds"] + 2 * limits["grading_seconds"] + 30
+
+
+class _Duplex:
+    """The grader process's end: jobs come in on one pipe, results go out on the other."""
+
+    def __init__(self, read_fd: int, write_fd: int) -> None:
+        self._in = Connection(read_fd, writable=False)
+        self._out = Connection(write_fd, readable=False)
+
+    def recv(self) -> Any:
+        return self._in.recv()
+
+    def send(self, obj: Any) -> None:
+        self._out.send(obj)
+
+
+if __name__ == "__main__":
+    serve(_Duplex(int(sys.argv[1]), int(sys.argv[2])), sys.argv[3] == "1")

@@ -1,0 +1,32 @@
+"""Partial credit: how much of a part's weight an almost-right answer earns.
+
+The defaults below are documented in the README; an assignment (or ``lagrade check --credit``)
+may change any of them.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+from pydantic import BaseModel, ConfigDict, Field
+
+
+class Credit(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    #: L = c * (the right Lagrangian), c != 1: same motion, wrong momenta and H.
+    scaled_lagrangian: float = Field(0.5, ge=0, le=1)
+    #: eom / hamilton / dict results / lists: each right equation or entry earns its share
+    #: (False: all or nothing).
+    per_equation: bool = True
+    #: exact nonlinear equations where the linearized ones were asked.
+    nonlinear_for_linearized: float = Field(1.0, ge=0, le=1)
+    #: a wrong extra entry in an order-free list (normal modes, conserved quantities) cancels a right one.
+    penalize_extra_entries: bool = True
+
+
+def load_credit(path: Path) -> Credit:
+    """A ``[credit]`` table (or a bare table) from a TOML file."""
+    data = tomllib.loads(path.read_text(encoding="utf-8"))
+    return Credit.model_validate(data.get("credit", data))

@@ -1,0 +1,152 @@
+"""Declared effects: what a scene says it involves, checked against what its expressions use.
+
+A scene declares its physical effects (``effects = [...]`` in the problem file). The numerical model
+is assembled from those declarations only (`lagrade.numerics.model`): contact events only for
+unilateral contact, multiplier functions only when constraint forces are asked, an explicit time
+argument only for time-dependent scenes, velocity-dependent forces (and their switching events)
+only for dissipation. For that to be safe, a scene must not *use* an effect it does not declare;
+`validate_effects` rejects such a scene when it is derived (``Mechanics.__init__``) with a message
+that names the expression and the effect to declare.
+
+`machinery` says which pieces of numerical machinery the declared effects call for; `lagrade bench
+effects` and ``lagrade show`` print it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, get_args
+
+import sympy as sp
+
+from lagrade.spec import Effect
+from lagrade.symbols import T
+
+if TYPE_CHECKING:  # pragma: no cover
+    from lagrade.reference import Mechanics
+
+VOCABULARY = frozenset(get_args(Effect))
+
+#: Effects that make the scene's equations depend on t explicitly. ``applied_force`` covers a
+#: prescribed external force law F(q, t) (12.48, 12.50), which may depend on time;
+#: ``time_dependent_force`` is accepted too if the vocabulary gains it.
+TIME_EFFECTS = frozenset({"time_dependent_constraint", "driven_support", "time_dependent_force"})
+TIME_CAPABLE = TIME_EFFECTS | {"applied_force"}
+DISSIPATION = frozenset({"dissipation_drag", "dissipation_friction"})
+FORCE_EFFECTS = DISSIPATION | {"applied_force", "time_dependent_force"}
+CONSTRAINT_EFFECTS = frozenset({"holonomic_constraint", "time_dependent_constraint", "rolling_constraint",
+                                "nonholonomic"})
+
+
+@dataclass(frozen=True)
+class Machinery:
+    """The pieces of numerical machinery a scene's model is built with (and nothing else)."""
+
+    explicit_time: bool = False
+    velocity_forces: bool = False
+    switching: tuple[str, ...] = ()        # arguments of Abs/sign in dissipative forces: switching events
+    multipliers: tuple[str, ...] = ()      # constraint forces computed along the motion
+    contact_events: tuple[str, ...] = ()   # multipliers whose zero ends a unilateral contact
+    notes: tuple[str, ...] = field(default=(), compare=False)
+
+    def lines(self) -> list[str]:
+        out = [
+            f"explicit time dependence: {'yes (t is an argument of the equations)' if self.explicit_time else 'no (autonomous)'}",
+            "velocity-dependent forces: " + ("yes (dissipation)" if self.velocity_forces else "no"),
+            "switching events (sign changes of dissipative forces): " + (", ".join(self.switching) or "none"),
+            "constraint-force multipliers: " + (", ".join(self.multipliers) or "none"),
+            "contact-loss events: " + (", ".join(f"{m} = 0" for m in self.contact_events) or "none"),
+        ]
+        return out + [f"note: {n}" for n in self.notes]
+
+
+class EffectsError(ValueError):
+    """A scene that uses an effect it does not declare."""
+
+
+def _velocity_switches(expr: sp.Expr, velocities: set[sp.Symbol]) -> list[sp.Expr]:
+    """Arguments of Abs and sign that depend on velocities: where a dissipative force changes branch."""
+    found: list[sp.Expr] = []
+    for f in sp.preorder_traversal(expr):
+        if isinstance(f, (sp.Abs, sp.sign)) and f.args[0].free_symbols & velocities:
+            if not any(sp.simplify(f.args[0] - g) == 0 or sp.simplify(f.args[0] + g) == 0 for g in found):
+                found.append(f.args[0])
+    return found
+
+
+def _uses_time(mech: Mechanics) -> list[str]:
+    where = []
+    if mech.L_full.has(T):
+        where.append("L" if mech.system.L is not None else "T/V")
+    where += [f"Q.{n}" for n, e in zip(mech.names, mech.Q) if e.has(T)]
+    where += [f"constraint on {c.coordinate}" for c in mech.system.constraints
+              if mech.constrained.get(sp.Symbol(c.coordinate), sp.S.Zero).has(T)]
+    return where
+
+
+def validate_effects(mech: Mechanics) -> None:
+    """Raise `lagrade.reference.SceneError` naming every effect the scene uses but does not declare."""
+    from lagrade.reference import SceneError
+
+    sys_ = mech.system
+    eff = set(sys_.effects)
+    label = f"system '{sys_.key}'" if sys_.key else "the scene"
+    problems: list[str] = []
+    time_where = _uses_time(mech)
+    if time_where and not eff & TIME_CAPABLE:
+        problems.append(f"{', '.join(time_where)} depend(s) on t explicitly: declare a time-dependent effect "
+                        "(time_dependent_constraint, driven_support, or applied_force for a prescribed force law F(q, t))")
+    cons_t = [c.coordinate for c in sys_.constraints if mech.constrained[sp.Symbol(c.coordinate)].has(T)]
+    if cons_t and not eff & {"time_dependent_constraint", "driven_support"}:
+        problems.append(f"the constraint on {', '.join(cons_t)} moves with t: declare time_dependent_constraint")
+    if sys_.constraints and not eff & CONSTRAINT_EFFECTS:
+        problems.append("it has constraints: declare holonomic_constraint (or time_dependent_constraint)")
+    velocities = set(mech.s.qd) | set(mech.full.qd)
+    q_exprs = dict(zip(mech.names, mech.Q))
+    if any(e != 0 for e in q_exprs.values()) and not eff & FORCE_EFFECTS:
+        problems.append(f"Q ({', '.join(n for n, e in q_exprs.items() if e != 0)}) is a generalized force: declare "
+                        "applied_force, dissipation_drag or dissipation_friction")
+    vel_q = [n for n, e in q_exprs.items() if e.free_symbols & velocities]
+    if vel_q and not eff & DISSIPATION:
+        problems.append(f"Q.{', Q.'.join(vel_q)} depend(s) on the velocities (a velocity-dependent force): declare "
+                        "dissipation_drag or dissipation_friction")
+    signs = [n for n, e in q_exprs.items() if any(f.args[0].free_symbols & velocities for f in e.atoms(sp.sign))]
+    if signs and "dissipation_friction" not in eff:
+        problems.append(f"Q.{', Q.'.join(signs)} switch(es) sign with the velocity (dry friction): declare "
+                        "dissipation_friction")
+    if mech.multipliers and "constraint_force" not in eff:
+        problems.append(f"multiplier(s) {', '.join(map(str, mech.multipliers))} (constraint forces) are asked: declare "
+                        "constraint_force")
+    if "g" in {str(s) for s in mech.L_full.free_symbols} and "g" in {p.name for p in mech.problem.parameters} \
+            and "gravity" not in eff:
+        problems.append("V uses g: declare gravity")
+    if any(p.linearized and p.system == sys_.key for p in mech.problem.parts) \
+            and "small_oscillation_linearization" not in eff:
+        problems.append("a part is linearized about equilibrium: declare small_oscillation_linearization")
+    if problems:
+        raise SceneError(f"{label} uses effects it does not declare (effects = {sorted(eff)}): " + "; ".join(problems))
+
+
+def machinery(mech: Mechanics) -> Machinery:
+    """The machinery the *declared* effects call for (validated to cover what the scene uses)."""
+    eff = set(mech.system.effects)
+    explicit_time = bool(eff & TIME_EFFECTS) or ("applied_force" in eff and bool(_uses_time(mech)))
+    velocity_forces = bool(eff & DISSIPATION)
+    switching: list[str] = []
+    if velocity_forces:
+        vel = set(mech.s.qd)
+        for e in mech.Q:
+            for arg in _velocity_switches(e, vel):
+                if str(arg) not in switching:
+                    switching.append(str(arg))
+    with_mult = [c for c in mech.system.constraints if c.multiplier]
+    multipliers = tuple(c.multiplier for c in with_mult) if "constraint_force" in eff else ()
+    notes: list[str] = []
+    contact: tuple[str, ...] = ()
+    if "unilateral_contact" in eff:
+        if with_mult:
+            contact = tuple(c.multiplier for c in with_mult)
+        else:
+            notes.append("unilateral contact is declared but no constraint carries a multiplier: contact is "
+                         "assumed to hold over the sampled window (no contact-loss event can be located)")
+    return Machinery(explicit_time, velocity_forces, tuple(switching), multipliers, contact, tuple(notes))
