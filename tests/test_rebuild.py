@@ -6,7 +6,7 @@ import time
 
 import pytest
 import sympy as sp
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from lagrade.answers.rebuild import EncodedValue, RebuildError, decode_value, rebuild_srepr
@@ -39,7 +39,9 @@ def combine(children):
         st.tuples(children, children).map(lambda a: a[0] + a[1]),
         st.tuples(children, children).map(lambda a: a[0] * a[1]),
         st.tuples(children, st.integers(-4, 4)).map(lambda a: _power(*a)),
-        st.tuples(children, rationals).map(lambda a: _power(*a)),
+        # small exponents only: sympy itself can spend minutes expanding (2*x)**(p/q) with huge p, q
+        st.tuples(children, st.sampled_from([sp.Rational(1, 2), sp.Rational(-1, 3), sp.Rational(5, 2)])
+                  ).map(lambda a: _power(*a)),
         st.tuples(st.sampled_from(unary), children).map(lambda a: a[0](a[1])),
         st.tuples(children, children).map(lambda a: sp.atan2(a[0], a[1])),
         children.map(lambda e: sp.Derivative(e, t)),
@@ -50,10 +52,12 @@ terms = st.recursive(leaves, combine, max_leaves=12)
 expressions = st.one_of(terms, st.tuples(terms, terms).map(lambda a: sp.Eq(a[0], a[1], evaluate=False)))
 
 
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow], derandomize=True)
 @given(expressions)
 def test_round_trip_property(expr):
     text = sp.srepr(expr)
+    huge = [f for f in expr.atoms(sp.Float) if f != 0 and not 1e-300 < abs(f) < 1e300]
+    assume(not huge)  # floats beyond double range are refused by design (see test_rejects_*)
     assert rebuild_srepr(text) == expr
 
 

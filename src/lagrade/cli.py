@@ -91,7 +91,7 @@ def show(problem_id: str, problems_dir: tuple[Path, ...]) -> None:
     for s in p.systems:
         label = f"System ({s.key}) {s.title}".rstrip() if s.key else "Coordinates"
         out.append(f"{label}:" if s.key else "Coordinates (functions of t):")
-        out += [f"  {c.name}(t){'':<6} {c.description}" for c in s.coordinates]
+        out += [f"  {c.name + '(t)':<12} {c.description}" for c in s.coordinates]
         for c in s.constraints:
             out.append(f"  constraint: {c.coordinate} = {c.value}" +
                        (f"  (multiplier {c.multiplier})" if c.multiplier else ""))

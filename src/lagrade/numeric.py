@@ -7,7 +7,6 @@ with common-subexpression elimination, and evaluated on whole arrays of points a
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -23,14 +22,16 @@ def compile_exprs(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vector
         return lambda *arrays: np.zeros((0, np.broadcast(*arrays).size if arrays else 1))
     raw = sp.lambdify(list(args), exprs, modules="numpy", cse=True, docstring_limit=0)
 
+    count = len(exprs)
+
     def evaluate(*arrays: np.ndarray) -> np.ndarray:
-        with warnings.catch_warnings(), np.errstate(all="ignore"):
-            warnings.simplefilter("ignore")
+        with np.errstate(all="ignore"):
             out = raw(*arrays)
             shape = np.broadcast(*arrays).shape if arrays else ()
-            return np.array([np.broadcast_to(np.asarray(o, dtype=complex).real
-                                             if np.iscomplexobj(o) else np.asarray(o, dtype=float), shape)
-                             for o in out], dtype=float)
+            result = np.empty((count, *shape))
+            for i, o in enumerate(out):  # assignment broadcasts constants; no copies per entry
+                result[i] = o.real if np.iscomplexobj(o) else o
+            return result
 
     return evaluate
 

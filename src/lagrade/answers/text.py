@@ -12,6 +12,12 @@ nothing is ``eval``-ed or ``sympify``-ed.  Conventions, chosen to fit mechanics 
 * ``a == b`` is the equation ``Eq(a, b)`` (at top level, in a list, or as a dict value).
 * Any other name is a plain symbol (parameters, momenta like ``p_theta``).  When
   ``known_names`` is given, unknown names are errors with a "did you mean" hint.
+
+In ``answer.toml`` a string value (or list item, or dict value) is read as **LaTeX** instead when
+it contains a control sequence (a backslash followed by a letter: ``\\frac``, ``\\dot``,
+``\\theta``...) or is wrapped in ``$...$``; see ``lagrade.answers.latex`` (``\\dot``, ``\\ddot`` and
+primes are time derivatives, ``=`` makes an equation, ``,`` separates the items of a list).
+Plain text never contains a backslash, so nothing written for ``parse_math`` changes meaning.
 """
 
 from __future__ import annotations
@@ -265,6 +271,15 @@ def load_toml_answer(path: Path, coordinates: Sequence[str],
     return values, problems
 
 
+def _parse_text(text: str, coordinates: Sequence[str], known: list[str] | None) -> Any:
+    """One TOML string: LaTeX (a ``\\command`` or ``$...$``) or plain text."""
+    from lagrade.answers.latex import is_latex, parse_latex_answer
+
+    if is_latex(text):
+        return parse_latex_answer(text, coordinates, known)
+    return parse_math(text, coordinates, known)
+
+
 def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
                 key: str, lines: list[str], line: int | None) -> object:
     if isinstance(raw, bool) or isinstance(raw, int):
@@ -272,14 +287,14 @@ def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
     if isinstance(raw, float):
         return sp.Float(repr(raw))
     if isinstance(raw, str):
-        return parse_math(raw, coordinates, known)
+        return _parse_text(raw, coordinates, known)
     if isinstance(raw, list):
         out = []
         for i, item in enumerate(raw):
             if not isinstance(item, str):
                 raise TextAnswerError(f"item {i + 1} of the list should be a string formula")
             try:
-                out.append(parse_math(item, coordinates, known))
+                out.append(_parse_text(item, coordinates, known))
             except TextAnswerError as exc:
                 raise TextAnswerError(line, f"item {i + 1}: {exc}") from None
         return out
@@ -293,7 +308,7 @@ def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
             if not isinstance(item, str):
                 raise TextAnswerError(sub_line, f"{sub} should be a string formula")
             try:
-                out_d[sub] = parse_math(item, coordinates, known)
+                out_d[sub] = _parse_text(item, coordinates, known)
             except TextAnswerError as exc:
                 raise TextAnswerError(sub_line, f"{sub}: {exc}") from None
         return out_d

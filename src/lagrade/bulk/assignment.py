@@ -32,8 +32,6 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
-from lagrade.answers.sandbox import SandboxLimits
-
 
 class AssignmentError(ValueError):
     """The assignment file cannot be used; the message says why."""
@@ -49,7 +47,9 @@ class Limits(BaseModel):
     memory_mb: int = Field(1024, gt=0)
     grading_seconds: float = Field(120, gt=0)
 
-    def sandbox(self) -> SandboxLimits:
+    def sandbox(self):
+        from lagrade.answers.sandbox import SandboxLimits
+
         return SandboxLimits(cpu_seconds=self.cpu_seconds, wall_seconds=self.wall_seconds,
                              memory_mb=self.memory_mb)
 

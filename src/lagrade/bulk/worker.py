@@ -149,9 +149,37 @@ def _mathml(value: Any) -> str:
             return f"<mi>{v}</mi>"
         if isinstance(v, str):
             return f"<mtext>{_esc(v)}</mtext>"
-        return mathml(sp.sympify(v) if isinstance(v, (int, float)) else v, printer="presentation")
+        return _dotted_mathml(sp.sympify(v) if isinstance(v, (int, float)) else v)
 
     return one(value)
+
+
+def _dotted_mathml(expr: Any) -> str:
+    """MathML with coordinates written as a physicist does: theta for theta(t), a dot for d/dt."""
+    import sympy as sp
+    from sympy.core.function import AppliedUndef
+    from sympy.printing.mathml import mathml
+
+    if not isinstance(expr, sp.Basic):
+        return mathml(expr, printer="presentation")
+    t = sp.Symbol("t")
+    marks = {1: "&#729;", 2: "&#168;"}
+    reps, shown = {}, {}
+    for i, d in enumerate(sorted(expr.atoms(sp.Derivative), key=str)):
+        n = d.derivative_count
+        f = d.expr
+        if isinstance(f, AppliedUndef) and f.args == (t,) and n in marks and all(v == t for v, _ in d.variable_count):
+            key = "lgdot" + "".join(chr(97 + int(c)) for c in str(i))
+            reps[d] = sp.Symbol(key)
+            base = mathml(sp.Symbol(f.func.__name__), printer="presentation")
+            shown[f"<mi>{key}</mi>"] = f"<mover accent=\"true\">{base}<mo>{marks[n]}</mo></mover>"
+    for f in expr.atoms(AppliedUndef):
+        if f.args == (t,):
+            reps.setdefault(f, sp.Symbol(f.func.__name__))
+    out = mathml(expr.xreplace(reps) if reps else expr, printer="presentation")
+    for k, v in shown.items():
+        out = out.replace(k, v)
+    return out
 
 
 def _esc(s: str) -> str:

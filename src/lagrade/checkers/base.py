@@ -33,6 +33,11 @@ class Context:
     hints: bool = False
     credit: Credit = field(default_factory=Credit)
 
+    @property
+    def prove_always(self) -> bool:
+        """Attempt symbolic proofs even where numbers already agree (strict accuracy only)."""
+        return self.accuracy.name == "strict"
+
     def mech(self, part: Part) -> Mechanics:
         return self.refs[part.system]
 
@@ -52,8 +57,10 @@ def graded(part: Part, fraction: float, method: Method, feedback: str, credit: C
     With ``credit.per_equation`` off, anything short of 1 scores 0 (still reported as partial)."""
     fraction = min(max(fraction, 0.0), 1.0)
     if credit is not None and not credit.per_equation and 0 < fraction < 1:
-        return result(part, "partial", 0.0, method, feedback)
+        return result(part, "partial", 0.0, method, feedback.replace("Incorrect: ", "Partly right: ", 1))
     verdict = "correct" if fraction >= 1.0 - 1e-12 else ("incorrect" if fraction <= 1e-12 else "partial")
+    if verdict == "partial" and feedback.startswith("Incorrect: "):
+        feedback = "Partly right: " + feedback[len("Incorrect: "):]
     return result(part, verdict, fraction, method, feedback)
 
 

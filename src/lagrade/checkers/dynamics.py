@@ -107,6 +107,15 @@ def _cost(traj: Comparison) -> str:
     return f" ({tol}{traj.rhs_evals} evaluations, {traj.seconds:.2f} s)"
 
 
+def _confirm(ctx: Context, prove: Callable[[], bool | None], trajectory: Callable[[], Comparison]):
+    """Evidence beyond agreement at every sampled state: trajectories first (cheap, batched); a
+    symbolic proof only where they do not settle it (chaos, a failed integration) or when asked
+    (``--accuracy strict``), because sympy's simplification can take far longer than everything else."""
+    traj = _try(trajectory)
+    proof = prove() if ctx.prove_always or traj is None or not traj.agree else None
+    return proof, traj
+
+
 def _decide(part: Part, proof: bool | None, traj: Comparison | None, note: str = "") -> PartResult:
     """Agreement at every random state already holds when this is called: say what else confirmed it."""
     extra = f" {note}" if note else ""
@@ -211,8 +220,11 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
     student_acc = _lazy(lambda: _lagrange_solver(L_s, mech, part))
 
     if c is not None and np.allclose(c, 1.0, rtol=1e-8, atol=0):
-        proof = proves_all_zero([a - b for a, b in zip(euler_lagrange(L_s, mech.s), euler_lagrange(mech.L, mech.s))],
-                                ctx.symbolic_seconds, ctx.positive)
+        proof, traj = _confirm(
+            ctx, lambda: proves_all_zero([a - b for a, b in zip(euler_lagrange(L_s, mech.s),
+                                                                 euler_lagrange(mech.L, mech.s))],
+                                         ctx.symbolic_seconds, ctx.positive),
+            lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
         args = [*mech.s.q, *mech.s.qd, T, *mech.params]
         diff = compile_exprs([L_s - mech.L], args)(*pts.args(args))[0]
         constant = all(np.allclose(diff[g * per:(g + 1) * per], diff[g * per], rtol=1e-8,
@@ -221,7 +233,6 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
             "It differs from the usual form by a constant, which changes nothing."
             if constant else "It differs from the usual form by a total time derivative dF/dt, which gives "
                              "the same equations of motion.")
-        traj = None if proof else _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
         return _decide(part, proof, traj, note)
     if c is not None and np.all(np.abs(c) > 1e-9):
         same = np.allclose(c, c[0], rtol=1e-6)
@@ -230,8 +241,28 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
                       f"your Lagrangian is the right one scaled by {factor}: it gives the same equations of motion, "
                       "but L = T - V fixes the scale (the momenta and H would be off by that factor).")
     message = _lagrangian_diagnosis(ctx, part, mech, L_s, E_s, pts, groups, per)
+    missing = _undetermined(L_s, mech, pts)
+    if missing:
+        message += (f" Your L gives no equation for {missing}'': it has no kinetic energy in "
+                    f"{missing}' (the matrix of d2L/dq'dq' is singular).")
+        return _wrong(part, 0.0, message, None, ctx.credit)
     traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
     return _wrong(part, 0.0, message, traj)
+
+
+def _undetermined(L: sp.Expr, mech: Mechanics, pts) -> str | None:
+    """The coordinate whose acceleration a Lagrangian leaves undetermined (singular kinetic matrix)."""
+    args = [*mech.s.q, *mech.s.qd, T, *mech.params]
+    n = len(mech.names)
+    hess = compile_exprs([sp.diff(L, a, b) for a in mech.s.qd for b in mech.s.qd], args)(*pts.args(args))
+    M = hess.reshape(n, n, -1).transpose(2, 0, 1)
+    if not np.all(np.isfinite(M)):
+        return None
+    s = np.linalg.svd(M, compute_uv=False)
+    if np.all(s[:, -1] > 1e-10 * np.maximum(s[:, 0], 1e-300)):
+        return None
+    _, _, vt = np.linalg.svd(M[0])
+    return mech.names[int(np.argmax(np.abs(vt[-1])))]
 
 
 def _lagrangian_diagnosis(ctx, part, mech, L_s, E_s, pts, groups, per) -> str:
@@ -327,12 +358,10 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
         return compiled.solve([*q, *qd, t, *params, *extra_v])
 
     if an.fraction >= 1.0:
-        ref_rows = mech.EL
-        proof = None
-        if len(rows) == len(ref_rows):
-            proof = _prove_rows_equivalent(rows, mech, ctx)
-        traj = None if proof else _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
+        proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
+                               lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
         return _decide(part, proof, traj)
+    _relabel(an, compiled, mech, pts, args, truth)
     named = _eom_mistake(part, mech, compiled, pts.args(args), list(mech.names))
     problems = [] if named is None else [named.rstrip(".")]
     for i in an.wrong if named is None else []:
@@ -343,6 +372,25 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
                         f"({', '.join(x + chr(39) * 2 for x in mech.names)}): an equation is missing or repeated")
     traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc)) if len(rows) >= an.n else None
     return _wrong(part, an.fraction, named or _sentence(problems), traj, ctx.credit)
+
+
+def _relabel(an, compiled: CompiledRows, mech: Mechanics, pts, args, truth) -> None:
+    """Name each wrong row after the reference equation its acceleration terms resemble most, so a
+    student is pointed at the right coordinate even when another acceleration has a bigger coefficient."""
+    argv = pts.args(args)
+    J = compiled.jacobian(argv, truth)  # (m, n, K)
+    q, qd, t, params = (np.array(pts.args(mech.s.q)), np.array(pts.args(mech.s.qd)), pts[T],
+                        np.array(pts.args(mech.params)).reshape(len(mech.params), pts.K))
+    n = len(mech.names)
+    M = mech._mass_f(*q, *qd, t, *params).reshape(n, n, pts.K)
+    for i in an.wrong:
+        scores = []
+        for r in range(n):
+            a, b = J[i], M[r]
+            cos = np.abs((a * b).sum(axis=0)) / (np.linalg.norm(a, axis=0) * np.linalg.norm(b, axis=0) + 1e-300)
+            scores.append(np.nanmedian(cos))
+        if np.isfinite(scores).any() and max(scores) > 0:
+            an.labels[i] = mech.names[int(np.nanargmax(scores))]
 
 
 def _eom_mistake(part: Part, mech: Mechanics, compiled: CompiledRows, argv, labels) -> str | None:
@@ -460,17 +508,18 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
     student_rates = _lazy(lambda: _hamiltonian_rates(H_s, mech, part))
 
     if same:
-        proof = None
-        try:
-            with time_bound(ctx.symbolic_seconds):
-                H_ref = mech.hamiltonian_symbolic
+        def prove() -> bool | None:
+            try:
+                with time_bound(ctx.symbolic_seconds):
+                    H_ref = mech.hamiltonian_symbolic
+            except _OutOfTime:
+                return None
             d = H_s - H_ref
-            proof = proves_all_zero([sp.diff(d, v) for v in [*mech.s.q, *mech.s.p]],
-                                    ctx.symbolic_seconds, ctx.positive)
-        except _OutOfTime:
-            proof = None
+            return proves_all_zero([sp.diff(d, v) for v in [*mech.s.q, *mech.s.p]],
+                                   ctx.symbolic_seconds, ctx.positive)
+
+        proof, traj = _confirm(ctx, prove, lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
         note = "" if np.all(np.abs(diff) <= tol) else "It differs from the usual H by a function of t only."
-        traj = None if proof else _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
         return _decide(part, proof, traj, note)
     message = _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, (q, p, t, params))
     traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
@@ -521,10 +570,24 @@ def _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, state) -> str:
             continue
     qd = mech.velocities(q, p, t, params)
     kin, pot = split_energy(mech.L, mech)
-    E = compile_exprs([kin + pot], [*mech.s.q, *mech.s.qd, T, *mech.params])(*q, *qd, t, *params)[0]
-    if matches(E):
+    h_r = mech.hamiltonian(q, p, t, params)
+    energy = compile_exprs([kin, pot], [*mech.s.q, *mech.s.qd, T, *mech.params])(*q, *qd, t, *params)
+    T_, V_ = energy
+    E = T_ + V_
+    if not np.allclose(E, h_r, rtol=1e-8, atol=1e-8 * scale_of(h_r)) and matches(E):
         return ("Incorrect: this is T + V, the energy, but here H is not the energy: the Hamiltonian is "
                 "sum(p q') - L written in the momenta.")
+    # Slips that keep the right momenta: judged against H's own kinetic and potential parts.
+    kinetic = h_r - V_
+    for values, message in [
+        (kinetic - V_, "the potential energy has the wrong sign: H = T + V (in the momenta)"),
+        (2 * kinetic + V_, "the kinetic part is twice too large: is a factor 1/2 missing?"),
+        (kinetic / 2 + V_, "the kinetic part is half what it should be"),
+        (kinetic, "the potential energy is missing"),
+        (V_, "the kinetic part p**2/(2 m) is missing"),
+    ]:
+        if matches(values):
+            return "Incorrect: " + message + "."
     return "Incorrect: H(q, p) differs from the Hamiltonian of this system (check the momenta p = dL/dq')."
 
 

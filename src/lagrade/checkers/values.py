@@ -73,6 +73,8 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
     a = _evaluate(student, pts, syms)
     b = _evaluate(ref, pts, syms)
     if np.all(agree(a, b)):
+        if not ctx.prove_always:  # equal at every sampled point: a proof would add time, not certainty
+            return True, "numeric", ""
         sym_ref = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
         proof = proves_zero(student - sym_ref, ctx.symbolic_seconds, ctx.positive) if sym_ref is not None else None
         return True, ("symbolic" if proof else "numeric"), ""
@@ -89,7 +91,17 @@ def _describe_difference(a: np.ndarray, b: np.ndarray) -> str:
         c = finite[0]
         if np.isclose(c, -1.0):
             return "has the wrong sign"
-        return f"is {c:.4g} times the correct value (a missing or extra factor)"
+        if np.isclose(c, 2 * np.pi) or np.isclose(c, 1 / (2 * np.pi)):
+            return f"is off by a factor 2*pi{'' if c > 1 else ' (too small)'}: angular frequency and frequency differ by 2*pi"
+        varies = np.ptp(b) > 1e-9 * scale_of(b)
+        return f"is {c:.4g} times the correct value" + (" (a missing or extra factor)" if varies else "")
+    with np.errstate(all="ignore"):
+        inverse = a * b
+    if inverse.size and np.all(np.isfinite(inverse)) and np.ptp(b) > 1e-9 * scale_of(b):
+        for c, what in ((2 * np.pi, "looks like an angular frequency where a period T = 2*pi/omega is asked (or the reverse)"),
+                        (1.0, "is the reciprocal of the correct value")):
+            if np.allclose(inverse, c, rtol=1e-8):
+                return what
     if np.all(agree(a, -b)):
         return "has the wrong sign"
     if not np.all(np.isfinite(a)):
@@ -218,8 +230,10 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
     student = _read(ctx, part, mech, value)
     a = _evaluate(student, pts, syms)
     if np.all(agree(a, b)):
-        sym_ref = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
-        proof = proves_zero(student - sym_ref, ctx.symbolic_seconds) if sym_ref is not None else None
+        proof = None
+        if ctx.prove_always:
+            sym_ref = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
+            proof = proves_zero(student - sym_ref, ctx.symbolic_seconds) if sym_ref is not None else None
         return graded(part, 1.0, "symbolic" if proof else "numeric", "correct.")
     if np.all(agree(a, np.degrees(b), rtol=1e-3)):
         return graded(part, 0.0, "numeric", "Incorrect: this looks like degrees; give the angle in radians.")

@@ -1,21 +1,46 @@
 """Trajectory evidence: integrate the student's and the reference dynamics side by side.
 
 Both systems start from the same sampled states with the same parameter values; all K
-trajectories are integrated as one batched system (one `solve_ivp` call per side), then compared
-in the tolerance-scaled norm ``|y - y_ref| / (atol + rtol*|y_ref|)``. For a wrong answer the
+trajectories are integrated as one batched system (one `solve_ivp` call per side and segment), then
+compared in the tolerance-scaled norm ``|y - y_ref| / (atol + rtol*|y_ref|)``. For a wrong answer the
 comparison says when the motions separate and which coordinate goes wrong first.
+
+What keeps this honest on hard scenes (measurements and reasons: docs/numerics.md):
+
+- **stiffness**: before integrating, the spectrum of the Jacobian is estimated at the initial states
+  (2*dim+1 batched evaluations, finite differences of each trajectory's own block). A scene whose
+  fastest rate times the horizon exceeds ``Accuracy.stiff_index`` is integrated with LSODA (which
+  switches to an implicit BDF method where the spectrum is dissipative), given the batched
+  block-diagonal Jacobian; when even that would exceed ``max_rhs_evals`` (a resolved fast oscillation
+  costs ~30 evaluations per radian at rtol 1e-10), the comparison window is shortened to what the budget
+  can integrate, and the report says so.
+- **chaos**: for scenes whose phase space allows it (two or more degrees of freedom, or explicit time),
+  the reference is integrated together with a slightly displaced copy of each state (still one batched
+  call). The measured amplification ``A(t)`` of the displacement (its logarithm over t is the
+  finite-time Lyapunov exponent) bounds how far two correct integrations of the same motion can drift
+  apart: integration errors of size ``rtol`` grow to ``rtol*A(t)``. The comparison window ends where
+  that reaches a tenth of the comparison tolerance, so a correct answer written differently is never
+  rejected by amplified rounding; a wrong answer still separates at once.
+- **events**: `integrate` takes batched event functions; each trajectory stops (is frozen) at its own
+  event (contact loss), or the integration restarts on a new branch (sign change of a friction force),
+  in segments of the same batched solve.
+- **singularities**: if the rates of a trajectory grow a millionfold (a coordinate singularity such as
+  theta -> 0 of a spherical pendulum, or a collision), the run stops and says where, instead of
+  returning a silently wrong motion.
 """
 
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
 Rates = Callable[[float, np.ndarray], np.ndarray]  # (t, y of shape (dim, K)) -> (dim, K)
+
+METHODS = ("DOP853", "RK45", "Radau", "LSODA", "BDF")
 
 
 @dataclass(frozen=True)
@@ -29,6 +54,17 @@ class Accuracy:
     compare_atol: float = 1e-6
     trajectories: int = 4
     max_rhs_evals: int = 20000
+    #: "auto": DOP853, or LSODA when stiffness is detected; or any solve_ivp method name.
+    method: str = "auto"
+    #: horizon * (fastest rate of the Jacobian) above which a scene counts as stiff.
+    stiff_index: float = 300.0
+    #: shorten the window of chaotic scenes by the measured amplification (see module doc).
+    chaos_window: bool = True
+
+    def describe(self) -> str:
+        return (f"{self.name}: integration rtol {self.rtol:g}, atol {self.atol:g}; comparison rtol "
+                f"{self.compare_rtol:g}, atol {self.compare_atol:g}; {self.trajectories} trajectories; "
+                f"at most {self.max_rhs_evals} evaluations per run")
 
 
 ACCURACY = {
@@ -37,9 +73,35 @@ ACCURACY = {
     "strict": Accuracy("strict", 1e-12, 1e-12, 1e-8, 1e-8, 6, 60000),
 }
 
+#: Rates of a trajectory growing by more than this factor mean a singularity is being approached.
+SINGULAR_GROWTH = 1e6
+
 
 class _TooManyEvaluations(Exception):
     pass
+
+
+class _Singular(Exception):
+    def __init__(self, t: float, k: int, growth: float):
+        super().__init__(t, k, growth)
+        self.t, self.k, self.growth = t, k, growth
+
+
+@dataclass
+class BatchedEvent:
+    """An event function of the batch: ``fn(t, Y) -> (K,)``, one root per trajectory.
+
+    ``action`` "stop": the trajectory ends there (frozen, and compared only up to that time), e.g.
+    contact loss; "switch": ``on_event(k, t, y_k)`` is called and the batch restarts there (a branch
+    change of a non-smooth force). ``direction`` as in `solve_ivp`.
+    """
+
+    name: str
+    fn: Callable[[float, np.ndarray], np.ndarray]
+    action: str = "stop"
+    direction: float = 0.0
+    on_event: Callable[[int, float, np.ndarray], None] | None = None
+    active: Callable[[], np.ndarray] | None = None  # (K,) bool: which trajectories watch this event
 
 
 @dataclass
@@ -52,37 +114,304 @@ class Run:
     message: str
     rhs_evals: int
     seconds: float
+    method: str = "DOP853"
+    #: per trajectory, the time up to which its motion is valid (events stop trajectories early).
+    t_stop: np.ndarray | None = None
+    #: event name -> list of (trajectory, time, state) found.
+    events: dict[str, list[tuple[int, float, np.ndarray]]] = field(default_factory=dict)
+    stiffness: Stiffness | None = None
+    horizon: float = 0.0
+    note: str = ""
+    segments: int = 1
 
 
-def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, samples: int = 201) -> Run:
-    """Integrate K states at once with DOP853; a blow-up or runaway cost ends the run, not the grader."""
+@dataclass
+class Stiffness:
+    """The Jacobian's spectrum at the initial states, as seen by the step-size controller."""
+
+    fastest: float      # max |lambda| over the batch (1/time)
+    damping: float      # max -Re(lambda) over the batch
+    oscillation: float  # max |Im(lambda)| over the batch
+    index: float        # horizon * fastest
+    stiff: bool
+    evals: int
+
+    def describe(self) -> str:
+        kind = "fast oscillation" if self.oscillation >= self.damping else "fast decay"
+        return f"stiff ({kind}: fastest rate {self.fastest:.3g}/s, {self.index:.3g} times the horizon)"
+
+
+# ----------------------------------------------------------------------------- Jacobians and stiffness
+
+
+def _wrap(rates: Rates, dim: int, K: int):
+    def f(t: float, Y: np.ndarray) -> np.ndarray:
+        with np.errstate(all="ignore"):
+            return np.asarray(rates(t, Y), dtype=float).reshape(dim, K)
+    return f
+
+
+def jacobian_blocks(rates: Rates, t: float, Y: np.ndarray, f0: np.ndarray | None = None) -> tuple[np.ndarray, int]:
+    """Each trajectory's Jacobian block (K, dim, dim) by forward differences: dim+1 batched evaluations,
+    because the K trajectories of the batch are independent (component i is perturbed in all at once)."""
+    dim, K = Y.shape
+    evals = 0
+    if f0 is None:
+        f0 = np.asarray(rates(t, Y), dtype=float).reshape(dim, K)
+        evals += 1
+    J = np.empty((K, dim, dim))
+    for j in range(dim):
+        h = 1e-7 * np.maximum(1.0, np.abs(Y[j]))
+        Yp = Y.copy()
+        Yp[j] += h
+        with np.errstate(all="ignore"):
+            fp = np.asarray(rates(t, Yp), dtype=float).reshape(dim, K)
+        evals += 1
+        J[:, :, j] = ((fp - f0) / h).T
+    return J, evals
+
+
+def estimate_stiffness(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, t0: float = 0.0) -> Stiffness:
+    """Spectrum of the Jacobian at the initial states: is the scene stiff over ``horizon``?"""
+    J, evals = jacobian_blocks(rates, t0, y0)
+    with np.errstate(all="ignore"):
+        J = np.where(np.isfinite(J), J, 0.0)
+        lam = np.linalg.eigvals(J)
+    fastest = float(np.abs(lam).max(initial=0.0))
+    damping = float(np.maximum(-lam.real, 0).max(initial=0.0))
+    osc = float(np.abs(lam.imag).max(initial=0.0))
+    index = fastest * horizon
+    return Stiffness(fastest, damping, osc, index, index > acc.stiff_index, evals)
+
+
+#: Measured cost of resolving a fast oscillation with LSODA / DOP853 at rtol 1e-10: evaluations per
+#: radian of the fastest mode, per batch (docs/numerics.md, "stiffness"). Scaled by tolerance below.
+EVALS_PER_RADIAN = 25.0
+
+
+def _affordable_window(st: Stiffness, horizon: float, acc: Accuracy) -> float:
+    """The longest window whose integration fits in the evaluation budget (with a margin of 2)."""
+    per_radian = EVALS_PER_RADIAN * (acc.rtol / 1e-10) ** (-1 / 8)
+    cost = per_radian * max(st.oscillation, st.damping / 50.0) * horizon
+    budget = acc.max_rhs_evals / 2
+    return horizon if cost <= budget else horizon * budget / cost
+
+
+# ----------------------------------------------------------------------------- integration
+
+
+def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, samples: int = 201, *,
+              method: str | None = None, events: Sequence[BatchedEvent] = (), jac: bool | None = None,
+              t_eval: np.ndarray | None = None, guard: bool = True) -> Run:
+    """Integrate K states at once; a blow-up, a singularity or a runaway cost ends the run, not the grader.
+
+    ``method``: None uses ``acc.method`` ("auto": DOP853, or LSODA with a batched Jacobian and, if
+    needed, a window the budget can afford, when the scene is stiff). ``events``: batched events
+    (contact loss stops a trajectory; a switching event restarts the batch on a new branch).
+    """
     dim, K = y0.shape
-    t_eval = np.linspace(0.0, horizon, samples)
+    y0 = np.asarray(y0, dtype=float)
     count = 0
+    start = time.perf_counter()
+    method = method or acc.method
+    stiff = None
+    note = ""
+    if method == "auto":
+        stiff = estimate_stiffness(rates, y0, horizon, acc)
+        count += stiff.evals
+        method = "LSODA" if stiff.stiff else "DOP853"
+        if stiff.stiff:
+            window = _affordable_window(stiff, horizon, acc)
+            note = f"{stiff.describe()}: integrated with LSODA (switches to implicit BDF)"
+            if window < horizon:
+                note += (f"; window shortened to [0, {window:.3g}] to stay within {acc.max_rhs_evals} "
+                         "evaluations")
+                horizon = window
+    if t_eval is None:
+        t_eval = np.linspace(0.0, horizon, samples)
+    alive = np.ones(K, dtype=bool)
+    t_stop = np.full(K, horizon)
+    scale0: np.ndarray | None = None
+    found: dict[str, list[tuple[int, float, np.ndarray]]] = {e.name: [] for e in events}
 
     def fun(t: float, flat: np.ndarray) -> np.ndarray:
-        nonlocal count
+        nonlocal count, scale0
         count += 1
         if count > acc.max_rhs_evals:
             raise _TooManyEvaluations
         with np.errstate(all="ignore"):
-            return np.asarray(rates(t, flat.reshape(dim, K)), dtype=float).reshape(-1)
+            out = np.asarray(rates(t, flat.reshape(dim, K)), dtype=float)
+            out = out.reshape(dim, K)
+            if not alive.all():
+                out = out * alive
+            if guard:
+                size = np.abs(out).max(axis=0)
+                if scale0 is None:
+                    scale0 = 1.0 + size
+                elif np.any(size > SINGULAR_GROWTH * scale0):
+                    k = int(np.argmax(size / scale0))
+                    raise _Singular(t, k, float(size[k] / scale0[k]))
+        return out.reshape(-1)
 
-    start = time.perf_counter()
+    jac_fn = None
+    if (jac if jac is not None else method in ("Radau", "BDF", "LSODA")):
+        def jac_fn(t: float, flat: np.ndarray) -> np.ndarray:
+            nonlocal count
+            Y = flat.reshape(dim, K)
+            J, n = jacobian_blocks(_wrap(rates, dim, K), t, Y)
+            count += n
+            if count > acc.max_rhs_evals:
+                raise _TooManyEvaluations
+            full = np.zeros((dim * K, dim * K))
+            idx = np.arange(dim)[:, None] * K
+            for k in range(K):
+                full[np.ix_(idx[:, 0] + k, idx[:, 0] + k)] = J[k] * alive[k]
+            return full
+
+    # One scalar event per (event, trajectory), sharing one batched evaluation per (t, y).
+    cache: dict = {}
+
+    def batched(ev: BatchedEvent, t: float, flat: np.ndarray) -> np.ndarray:
+        key = (ev.name, t, flat.tobytes())
+        if key not in cache:
+            if len(cache) > 64:
+                cache.clear()
+            with np.errstate(all="ignore"):
+                cache[key] = np.asarray(ev.fn(t, flat.reshape(dim, K)), dtype=float)
+        return cache[key]
+
+    def scalar_events() -> list:
+        out = []
+        for ev in events:
+            act = ev.active() if ev.active is not None else np.ones(K, dtype=bool)
+            for k in range(K):
+                if not (alive[k] and act[k]):
+                    continue
+
+                def g(t, flat, ev=ev, k=k):
+                    return batched(ev, t, flat)[k]
+                g.terminal = True
+                g.direction = ev.direction
+                g.tag = (ev, k)
+                out.append(g)
+        return out
+
+    ts: list[np.ndarray] = []
+    ys: list[np.ndarray] = []
+    t0, y = 0.0, y0.reshape(-1).copy()
+    segments = 0
     try:
-        with np.errstate(all="ignore"):
-            sol = solve_ivp(fun, (0.0, horizon), y0.reshape(-1), method="DOP853", t_eval=t_eval,
-                            rtol=acc.rtol, atol=acc.atol)
-        y = sol.y.reshape(dim, K, -1)
-        ok = sol.status == 0 and bool(np.all(np.isfinite(y)))
-        message = "" if ok else (sol.message if sol.status != 0 else "the state became infinite or undefined")
-        return Run(sol.t, y, ok, message, count, time.perf_counter() - start)
+        while True:
+            segments += 1
+            evs = scalar_events()
+            last = t0 >= horizon
+            mask = (t_eval >= t0) & (t_eval <= horizon) if segments == 1 else (t_eval > t0) & (t_eval <= horizon)
+            if last:
+                break
+            with np.errstate(all="ignore"):
+                sol = solve_ivp(fun, (t0, horizon), y, method=method, t_eval=t_eval[mask], rtol=acc.rtol,
+                                atol=acc.atol, events=evs or None, **({"jac": jac_fn} if jac_fn else {}))
+            ts.append(sol.t)
+            ys.append(sol.y)
+            if sol.status == -1:
+                raise _Failed(sol.message, sol.t[-1] if sol.t.size else t0)
+            if sol.status == 0 or not evs:
+                break
+            # a terminal event: which one fired first
+            hits = [(te[0], ye[0], g) for g, te, ye in zip(evs, sol.t_events, sol.y_events) if len(te)]
+            t_hit, y_hit, g = min(hits, key=lambda h: h[0])
+            ev, k = g.tag
+            yk = y_hit.reshape(dim, K)
+            found[ev.name].append((k, float(t_hit), yk[:, k].copy()))
+            if ev.action == "stop":
+                alive[k] = False
+                t_stop[k] = t_hit
+            elif ev.on_event is not None:
+                ev.on_event(k, float(t_hit), yk[:, k].copy())
+            t0, y = float(t_hit), y_hit.copy()
+            if segments > 200:
+                raise _Failed("more than 200 events (chattering between branches)", t0)
+            if not alive.any():
+                break
+        t_all = np.concatenate(ts) if ts else t_eval[:1]
+        y_all = np.concatenate(ys, axis=1).reshape(dim, K, -1) if ys else y0[..., None]
+        # frozen trajectories: their samples after the stop carry the stopped state (masked by t_stop)
+        ok = bool(np.all(np.isfinite(y_all)))
+        message = "" if ok else "the state became infinite or undefined"
+        return Run(t_all, y_all, ok, message, count, time.perf_counter() - start, method, t_stop, found,
+                   stiff, horizon, note, segments)
     except _TooManyEvaluations:
         return Run(t_eval[:1], y0[..., None], False, f"needed more than {acc.max_rhs_evals} steps",
-                   count, time.perf_counter() - start)
+                   count, time.perf_counter() - start, method, t_stop, found, stiff, horizon, note, segments)
+    except _Singular as exc:
+        return Run(t_eval[:1], y0[..., None], False,
+                   f"trajectory {exc.k + 1} approaches a singularity at t = {exc.t:.4g} (its rates grew "
+                   f"{exc.growth:.2g}-fold): a coordinate singularity or a collision, not integrated through",
+                   count, time.perf_counter() - start, method, t_stop, found, stiff, horizon, note, segments)
+    except _Failed as exc:
+        return Run(t_eval[:1], y0[..., None], False, f"integration failed at t = {exc.t:.4g} ({exc.reason})",
+                   count, time.perf_counter() - start, method, t_stop, found, stiff, horizon, note, segments)
     except (ValueError, ZeroDivisionError, np.linalg.LinAlgError, FloatingPointError) as exc:
         return Run(t_eval[:1], y0[..., None], False, f"integration failed ({exc})", count,
-                   time.perf_counter() - start)
+                   time.perf_counter() - start, method, t_stop, found, stiff, horizon, note, segments)
+
+
+class _Failed(Exception):
+    def __init__(self, reason: str, t: float):
+        super().__init__(reason, t)
+        self.reason, self.t = reason, float(t)
+
+
+# ----------------------------------------------------------------------------- chaos
+
+
+@dataclass
+class Amplification:
+    """How much a small displacement of each initial state grows along the reference motion."""
+
+    t: np.ndarray
+    factor: np.ndarray        # (K, len(t)): |delta(t)| / |delta(0)| in the comparison's scaled norm
+    ftle: np.ndarray          # (K,): ln(factor at the end) / t_end, the finite-time Lyapunov exponents
+    window: float             # where rtol * factor reaches compare_rtol / SAFETY (min over trajectories)
+
+
+#: margin between the amplified integration error and the comparison tolerance
+SAFETY = 10.0
+
+
+def may_be_chaotic(rates: Rates, y0: np.ndarray, horizon: float) -> bool:
+    """A flow can be chaotic only in a phase space of dimension 3 or more (with t counted if explicit)."""
+    dim, K = y0.shape
+    if dim >= 4:
+        return True
+    with np.errstate(all="ignore"):
+        a = np.asarray(rates(0.0, y0), dtype=float)
+        b = np.asarray(rates(0.5 * horizon, y0), dtype=float)
+    return dim >= 2 and not np.allclose(a, b, rtol=1e-13, atol=0.0)
+
+
+def amplification(ref_pair: Run, K: int, acc: Accuracy) -> Amplification:
+    """From a reference run over [y0, y0 + delta] (2K trajectories), the growth of each delta."""
+    y = ref_pair.y
+    a, b = y[:, :K], y[:, K:]
+    scale = acc.compare_atol + acc.compare_rtol * np.abs(a)
+    d = np.sqrt((((b - a) / scale) ** 2).sum(axis=0))  # (K, T)
+    d0 = np.maximum(d[:, :1], 1e-300)
+    factor = np.maximum(d / d0, 1.0)
+    t = ref_pair.t
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ftle = np.log(factor[:, -1]) / max(t[-1], 1e-300)
+    limit = acc.compare_rtol / (SAFETY * acc.rtol)
+    over = factor > limit
+    window = float(ref_pair.horizon)
+    for k in range(K):
+        if over[k].any():
+            i = int(np.argmax(over[k]))
+            window = min(window, float(t[max(i - 1, 0)]))
+    return Amplification(t, factor, ftle, window)
+
+
+# ----------------------------------------------------------------------------- comparing two motions
 
 
 @dataclass
@@ -95,37 +424,94 @@ class Comparison:
     note: str = ""
     seconds: float = 0.0
     rhs_evals: int = 0
+    method: str = ""
+    rtol: float | None = None
+    window: float | None = None          # compared over [0, window] (<= horizon)
+    why_window: str = ""                 # chaos (measured FTLE) or stiffness budget
+    ftle: float | None = None
 
     def describe(self) -> str:
+        at = ""
+        if self.method:
+            at = f" ({self.method} at rtol {self.rtol:g}" + (f"; {self.why_window}" if self.why_window else "") + ")"
         if self.agree:
-            return f"trajectories agree over t in [0, {self.horizon:g}]"
+            w = self.window if self.window is not None else self.horizon
+            return f"trajectories agree over t in [0, {w:.3g}]{at}"
         if self.note:
             return self.note
         return (f"from the same initial state your motion separates from the true one at t = "
                 f"{self.separation_time:.3g}; {self.component} goes wrong first")
 
 
+def _displaced(y0: np.ndarray, seed: int = 12) -> np.ndarray:
+    rng = np.random.default_rng(seed)
+    d = rng.standard_normal(y0.shape)
+    d /= np.linalg.norm(d, axis=0, keepdims=True)
+    return y0 + 1e-7 * d * (1.0 + np.abs(y0))
+
+
 def compare_runs(student: Rates, reference: Rates, y0: np.ndarray, labels: list[str], horizon: float,
-                 acc: Accuracy) -> Comparison:
-    """Integrate both from ``y0`` and compare; ``labels`` names each state component."""
-    ref = integrate(reference, y0, horizon, acc)
+                 acc: Accuracy, *, chaos: bool | None = None, events: Sequence[BatchedEvent] = ()) -> Comparison:
+    """Integrate both from ``y0`` and compare; ``labels`` names each state component.
+
+    ``chaos``: measure the amplification of small displacements along the reference and compare only
+    where it keeps correct integrations within tolerance (None: when the phase space allows chaos).
+    """
+    dim, K = y0.shape
+    chaos = acc.chaos_window and (may_be_chaotic(reference, y0, horizon) if chaos is None else chaos)
+    method = acc.method
+    stiff = None
+    pre = 0
+    if method == "auto":
+        stiff = estimate_stiffness(reference, y0, horizon, acc)
+        pre = stiff.evals
+        method = "LSODA" if stiff.stiff else "DOP853"
+    window, why = horizon, ""
+    if stiff is not None and stiff.stiff:
+        window = _affordable_window(stiff, horizon, acc)
+        why = stiff.describe() + (f", window shortened to fit {acc.max_rhs_evals} evaluations" if window < horizon else "")
+    amp = None
+    if chaos and not events:
+        # the displaced copies double the batch: cheaper than a second call, and still one solve_ivp
+        def pair_rates(t: float, Y: np.ndarray) -> np.ndarray:
+            return np.concatenate([reference(t, Y[:, :K]), reference(t, Y[:, K:])], axis=1)
+
+        pair = integrate(pair_rates, np.concatenate([y0, _displaced(y0)], axis=1), window, acc, method=method)
+        ref = Run(pair.t, pair.y[:, :K], pair.ok, pair.message, pair.rhs_evals, pair.seconds, method,
+                  pair.t_stop[:K] if pair.t_stop is not None else None, {}, None, window)
+        if pair.ok:
+            amp = amplification(pair, K, acc)
+            if amp.window < window:
+                why = (f"chaotic: finite-time Lyapunov exponent {float(np.nanmax(amp.ftle)):.3g}/s measured, so "
+                       f"compared over [0, {amp.window:.3g}] where the amplified integration error stays below "
+                       f"a tenth of the tolerance")
+                window = max(amp.window, 0.0)
+    else:
+        ref = integrate(reference, y0, window, acc, method=method, events=events)
+    ref.rhs_evals += pre
+    common = dict(seconds=ref.seconds, rhs_evals=ref.rhs_evals, method=method, rtol=acc.rtol, window=window,
+                  why_window=why, ftle=float(np.nanmax(amp.ftle)) if amp is not None else None)
     if not ref.ok:
-        return Comparison(False, horizon, note=f"reference integration failed: {ref.message}",
-                          seconds=ref.seconds, rhs_evals=ref.rhs_evals)
-    stu = integrate(student, y0, horizon, acc)
-    seconds = ref.seconds + stu.seconds
-    evals = ref.rhs_evals + stu.rhs_evals
+        common["note"] = f"reference integration failed: {ref.message}"
+        return Comparison(False, horizon, **common)
+    keep = ref.t <= window + 1e-12
+    ref = Run(ref.t[keep], ref.y[..., keep], ref.ok, ref.message, ref.rhs_evals, ref.seconds, ref.method,
+              ref.t_stop, ref.events, ref.stiffness, window)
+    stu = integrate(student, y0, window, acc, method=method, events=events, t_eval=ref.t)
+    common["seconds"] += stu.seconds
+    common["rhs_evals"] += stu.rhs_evals
     n = min(stu.y.shape[-1], ref.y.shape[-1])
+    tt = ref.t[:n]
     err = np.abs(stu.y[..., :n] - ref.y[..., :n]) / (acc.compare_atol + acc.compare_rtol * np.abs(ref.y[..., :n]))
     err = np.where(np.isfinite(err), err, np.inf)
+    if ref.t_stop is not None:
+        err = np.where(tt[None, None, :] <= ref.t_stop[None, :, None] + 1e-12, err, 0.0)
     bad = err > 1.0
     if not bad.any() and stu.ok:
-        return Comparison(True, horizon, max_error=float(err.max(initial=0.0)), seconds=seconds, rhs_evals=evals)
+        return Comparison(True, horizon, max_error=float(err.max(initial=0.0)), **common)
     if bad.any():
         first_t = int(np.argmax(bad.any(axis=(0, 1))))
         comp = int(np.argmax(err[:, :, first_t].max(axis=1)))
-        return Comparison(False, horizon, float(ref.t[first_t]), labels[comp], float(err.max()),
-                          seconds=seconds, rhs_evals=evals)
+        return Comparison(False, horizon, float(ref.t[first_t]), labels[comp], float(err.max()), **common)
     return Comparison(False, horizon, float(stu.t[-1]) if stu.t.size else 0.0, "the motion",
-                      note=f"your equations could not be integrated: {stu.message}",
-                      seconds=seconds, rhs_evals=evals)
+                      note=f"your equations could not be integrated: {stu.message}", **common)

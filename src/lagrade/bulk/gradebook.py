@@ -1,0 +1,97 @@
+"""The grades as exports and reports see them: points per student and problem, from the database.
+
+Points are computed here, from the engine's stored part scores and the assignment's weights (the
+assignment stored by the last ``lagrade grade``), so that every export and report agrees.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lagrade.bulk.assignment import Assignment, parse_assignment, points
+from lagrade.bulk.store import Store, StoreError
+
+
+@dataclass
+class ProblemGrade:
+    problem: str
+    points: float
+    possible: float
+    submitted: bool
+    outcome: str = "missing"       # graded | failed | missing
+    status: str = ""
+    reason: str = ""
+    problems: list[str] = field(default_factory=list)
+    parts: list[dict] = field(default_factory=list)
+    source: str = ""
+    path: str = ""
+
+
+@dataclass
+class StudentGrade:
+    student: str
+    problems: dict[str, ProblemGrade]
+
+    @property
+    def points(self) -> float:
+        return round(sum(p.points for p in self.problems.values()), 6)
+
+    @property
+    def possible(self) -> float:
+        return sum(p.possible for p in self.problems.values())
+
+
+@dataclass
+class Gradebook:
+    assignment: Assignment
+    students: list[StudentGrade]
+    skipped: list[tuple[str, str]]
+    grader_version: str
+
+    @property
+    def possible(self) -> float:
+        return sum(self.totals.values())
+
+    @property
+    def totals(self) -> dict[str, float]:
+        if not self.students:
+            return {}
+        return {pid: g.possible for pid, g in self.students[0].problems.items()}
+
+    def student(self, name: str) -> StudentGrade:
+        for s in self.students:
+            if s.student == name:
+                return s
+        raise KeyError(name)
+
+
+def load_gradebook(db: Path | str) -> Gradebook:
+    with Store(db, create=False) as store:
+        raw = store.meta("assignment")
+        if raw is None:
+            raise StoreError(f"{db}: nothing graded yet (run 'lagrade grade' first)")
+        assignment = parse_assignment(json.loads(raw), str(db))
+        totals = json.loads(store.meta("problem_totals") or "{}")
+        subs = {(r["student"], r["problem"]): r for r in store.submissions()}
+        parts: dict[tuple[str, str], list[dict]] = {}
+        for r in store.parts():
+            parts.setdefault((r["student"], r["problem"]), []).append(dict(r))
+        names = sorted(set(store.students()) | {s for s, _ in subs})
+        students = []
+        for name in names:
+            grades = {}
+            for ap in assignment.problems:
+                row = subs.get((name, ap.id))
+                ps = parts.get((name, ap.id), [])
+                pts, possible = points(ap, ps, totals.get(ap.id, 0.0))
+                if row is None:
+                    grades[ap.id] = ProblemGrade(ap.id, 0.0, possible, False, reason="no file handed in")
+                else:
+                    grades[ap.id] = ProblemGrade(ap.id, pts, possible, True, row["outcome"], row["status"],
+                                                 row["reason"], json.loads(row["problems"]), ps, row["source"],
+                                                 row["path"])
+            students.append(StudentGrade(name, grades))
+        skipped = [(r["path"], r["reason"]) for r in store.skipped()]
+        return Gradebook(assignment, students, skipped, store.meta("grader_version") or "")

@@ -1,0 +1,219 @@
+"""The HTML report: a static folder an instructor opens in a browser, nothing to install.
+
+``index.html`` is the class overview (a histogram per problem, per-part success rates, the most
+common wrong answers rendered as math, files that could not be graded or were skipped, every
+student's points); ``students/<student>.html`` is one feedback page per student with their answers
+as rendered math (presentation MathML, which browsers render natively: no script, no network) and
+the feedback of every part. Numbers carry ``data-`` attributes so that tests can read them back.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import re
+import shutil
+from html import escape
+from pathlib import Path
+
+from lagrade.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
+from lagrade.bulk.summary import common_mistakes, common_wrong_answers, failure_counts, problem_stats
+
+CSS = """
+body { font: 15px/1.45 system-ui, sans-serif; margin: 2em auto; max-width: 70em; padding: 0 1em; color: #222; }
+h1, h2, h3 { line-height: 1.2; } table { border-collapse: collapse; margin: .5em 0 1.5em; }
+th, td { border-bottom: 1px solid #ddd; padding: .3em .6em; text-align: left; vertical-align: top; }
+th { background: #f4f4f4; cursor: default; } th.sortable { cursor: pointer; }
+.num { text-align: right; font-variant-numeric: tabular-nums; }
+.correct { color: #166534; } .partial { color: #92400e; } .incorrect, .invalid, .failed { color: #b91c1c; }
+.missing { color: #6b7280; } .problems { display: flex; flex-wrap: wrap; gap: 1.5em; }
+.card { border: 1px solid #ddd; border-radius: 6px; padding: .8em 1em; min-width: 20em; }
+svg text { font: 11px system-ui, sans-serif; fill: #333; } svg rect.bar { fill: #3b82f6; }
+pre { background: #f6f8fa; padding: .8em; overflow-x: auto; font-size: 13px; }
+math { font-size: 1.1em; } .muted { color: #6b7280; } a { color: #1d4ed8; }
+"""
+
+# The first script of every page: collects errors so that a headless browser can report them.
+ERRORS_JS = """window.__lagradeErrors = [];
+window.addEventListener('error', function (e) {
+  var t = e.target && e.target !== window ? (e.target.src || e.target.href || e.target.tagName) : e.message;
+  window.__lagradeErrors.push(String(t));
+}, true);
+window.addEventListener('load', function () {
+  document.body.setAttribute('data-errors', String(window.__lagradeErrors.length));
+  document.body.setAttribute('data-loaded', 'yes');
+});"""
+
+SORT_JS = """// Click a column heading of a table with class "sortable" to sort by it.
+document.querySelectorAll('table.sortable').forEach(function (table) {
+  table.querySelectorAll('th').forEach(function (th, col) {
+    th.classList.add('sortable');
+    th.addEventListener('click', function () {
+      var body = table.tBodies[0], rows = Array.prototype.slice.call(body.rows);
+      var dir = th.getAttribute('data-dir') === 'asc' ? -1 : 1;
+      th.setAttribute('data-dir', dir === 1 ? 'asc' : 'desc');
+      rows.sort(function (a, b) {
+        var x = a.cells[col].getAttribute('data-value') || a.cells[col].textContent;
+        var y = b.cells[col].getAttribute('data-value') || b.cells[col].textContent;
+        var nx = parseFloat(x), ny = parseFloat(y);
+        return dir * (isNaN(nx) || isNaN(ny) ? x.localeCompare(y) : nx - ny);
+      });
+      rows.forEach(function (r) { body.appendChild(r); });
+    });
+  });
+});
+document.body.setAttribute('data-scripts', 'ran');"""
+
+
+def slug(student: str) -> str:
+    s = re.sub(r"[^A-Za-z0-9._-]", "_", student).strip(".") or "student"
+    if s != student:
+        s += "-" + hashlib.sha1(student.encode()).hexdigest()[:6]
+    return s
+
+
+def _n(x: float) -> str:
+    return f"{round(x, 4):g}"
+
+
+def _page(title: str, body: str, depth: int = 0) -> str:
+    up = "../" * depth
+    return (f"<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+            f"<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+            f"<title>{escape(title)}</title><script>{ERRORS_JS}</script>"
+            f"<link rel=\"stylesheet\" href=\"{up}style.css\"></head>\n<body>\n{body}\n"
+            f"<script src=\"{up}report.js\"></script></body></html>\n")
+
+
+def _histogram_svg(counts: list[int], possible: float, pid: str) -> str:
+    w, h, pad = 320, 140, 24
+    peak = max(counts) or 1
+    bw = (w - 2 * pad) / len(counts)
+    bars = []
+    for i, c in enumerate(counts):
+        bh = (h - 2 * pad) * c / peak
+        x, y = pad + i * bw, h - pad - bh
+        lo, hi = possible * i / len(counts), possible * (i + 1) / len(counts)
+        label = f"{_n(lo)}–{_n(hi)}" if i < len(counts) - 1 else f"{_n(lo)}–{_n(possible)} (incl. full marks)"
+        bars.append(f"<rect class=\"bar\" x=\"{x + 1:.1f}\" y=\"{y:.1f}\" width=\"{bw - 2:.1f}\" height=\"{bh:.1f}\" "
+                    f"data-bin=\"{i}\" data-count=\"{c}\"><title>{escape(label)}: {c}</title></rect>")
+        if c:
+            bars.append(f"<text x=\"{x + bw / 2:.1f}\" y=\"{y - 3:.1f}\" text-anchor=\"middle\">{c}</text>")
+    axis = (f"<line x1=\"{pad}\" y1=\"{h - pad}\" x2=\"{w - pad}\" y2=\"{h - pad}\" stroke=\"#999\"/>"
+            f"<text x=\"{pad}\" y=\"{h - 6}\">0</text>"
+            f"<text x=\"{w - pad}\" y=\"{h - 6}\" text-anchor=\"end\">{_n(possible)}</text>")
+    return (f"<svg class=\"histogram\" data-problem=\"{escape(pid)}\" width=\"{w}\" height=\"{h}\" role=\"img\" "
+            f"aria-label=\"points for problem {escape(pid)}\">{''.join(bars)}{axis}</svg>")
+
+
+def _math(text: str | None, mathml: str | None) -> str:
+    if mathml:
+        return f"<math display=\"inline\">{mathml}</math>" if not mathml.lstrip().startswith("<math") else mathml
+    if text:
+        return f"<code>{escape(text)}</code>"
+    return "<span class=\"muted\">—</span>"
+
+
+def _index(book: Gradebook) -> str:
+    a = book.assignment
+    totals = [s.points for s in book.students]
+    mean = sum(totals) / len(totals) if totals else 0.0
+    out = [f"<h1>{escape(a.title or a.name)}</h1>",
+           f"<p><span id=\"students\" data-value=\"{len(book.students)}\">{len(book.students)}</span> students, "
+           f"class mean <span id=\"mean\" data-value=\"{mean:.6f}\">{mean:.2f}</span> / "
+           f"<span id=\"possible\" data-value=\"{book.possible:g}\">{_n(book.possible)}</span> points. "
+           f"<span class=\"muted\">Graded by lagrade {escape(book.grader_version)}, accuracy {escape(a.accuracy)}.</span></p>",
+           "<h2>Problems</h2><div class=\"problems\">"]
+    for st in problem_stats(book):
+        rows = "".join(f"<tr data-part=\"{escape(k)}\"><td>{escape(k)}</td><td class=\"num\" data-value=\"{v:.6f}\">"
+                       f"{100 * v:.0f}%</td></tr>" for k, v in st.part_success.items())
+        out.append(f"<section class=\"card\" id=\"problem-{escape(st.problem)}\" data-problem=\"{escape(st.problem)}\">"
+                   f"<h3>Problem {escape(st.problem)}</h3>"
+                   f"<p>{st.submitted} handed in, {st.failed} could not be graded; mean "
+                   f"<span class=\"mean\" data-value=\"{st.mean:.6f}\">{st.mean:.2f}</span> / {_n(st.possible)}</p>"
+                   f"{_histogram_svg(st.histogram, st.possible, st.problem)}"
+                   f"<table class=\"part-success\"><thead><tr><th>part</th><th>correct</th></tr></thead>"
+                   f"<tbody>{rows}</tbody></table></section>")
+    out.append("</div>")
+    wrong = common_wrong_answers(book, 12)
+    if wrong:
+        out.append("<h2>Most common wrong answers</h2><table id=\"wrong-answers\"><thead><tr><th>problem</th>"
+                   "<th>part</th><th>answer</th><th class=\"num\">students</th></tr></thead><tbody>")
+        out += [f"<tr><td>{escape(p)}</td><td>{escape(part)}</td><td>{_math(text, ml)}</td>"
+                f"<td class=\"num\">{c}</td></tr>" for p, part, text, ml, c in wrong]
+        out.append("</tbody></table>")
+    mistakes = common_mistakes(book, 12)
+    if mistakes:
+        out.append("<h2>Most common feedback</h2><table id=\"mistakes\"><thead><tr><th>problem</th><th>part</th>"
+                   "<th>feedback</th><th class=\"num\">students</th></tr></thead><tbody>")
+        out += [f"<tr><td>{escape(p)}</td><td>{escape(part)}</td><td>{escape(fb)}</td><td class=\"num\">{c}</td></tr>"
+                for p, part, fb, c in mistakes]
+        out.append("</tbody></table>")
+    fails = failure_counts(book)
+    if fails:
+        out.append("<h2>Files that could not be graded</h2><ul>" +
+                   "".join(f"<li>{escape(k)}: {v}</li>" for k, v in fails.most_common()) + "</ul>")
+    out.append("<h2>Students</h2><table id=\"students-table\" class=\"sortable\"><thead><tr><th>student</th>" +
+               "".join(f"<th class=\"num\">{escape(p)}</th>" for p in a.ids) +
+               "<th class=\"num\">total</th></tr></thead><tbody>")
+    for s in book.students:
+        cells = "".join(f"<td class=\"num{' failed' if s.problems[p].outcome == 'failed' else ''}\" "
+                        f"data-problem=\"{escape(p)}\" data-value=\"{s.problems[p].points:.6f}\">"
+                        f"{_n(s.problems[p].points) if s.problems[p].submitted else '—'}</td>" for p in a.ids)
+        out.append(f"<tr data-student=\"{escape(s.student)}\"><td><a href=\"students/{slug(s.student)}.html\">"
+                   f"{escape(s.student)}</a></td>{cells}<td class=\"num total\" data-value=\"{s.points:.6f}\">"
+                   f"{_n(s.points)}</td></tr>")
+    out.append("</tbody></table>")
+    if book.skipped:
+        out.append("<h2>Skipped files</h2><table id=\"skipped\"><thead><tr><th>file</th><th>reason</th></tr></thead><tbody>" +
+                   "".join(f"<tr><td><code>{escape(p)}</code></td><td>{escape(r)}</td></tr>" for p, r in book.skipped) +
+                   "</tbody></table>")
+    return _page(f"{a.title or a.name}: class report", "\n".join(out))
+
+
+def _problem_section(g: ProblemGrade) -> str:
+    head = (f"<section class=\"problem\" data-problem=\"{escape(g.problem)}\"><h2>Problem {escape(g.problem)}: "
+            f"<span class=\"points\" data-value=\"{g.points:.6f}\">{_n(g.points)}</span> / {_n(g.possible)}</h2>")
+    if not g.submitted:
+        return head + "<p class=\"missing\">No file was handed in for this problem.</p></section>"
+    out = [head]
+    if g.outcome == "failed":
+        out.append(f"<p class=\"failed\">This file could not be graded: {escape(g.reason)}</p>")
+    if g.problems:
+        out.append("<ul class=\"file-problems\">" + "".join(f"<li>{escape(p)}</li>" for p in g.problems) + "</ul>")
+    out.append("<table class=\"parts\"><thead><tr><th>part</th><th>verdict</th><th class=\"num\">score</th>"
+               "<th>your answer</th><th>feedback</th></tr></thead><tbody>")
+    for p in g.parts:
+        out.append(f"<tr data-part=\"{escape(p['part'])}\"><td>{escape(p['part'])}</td>"
+                   f"<td class=\"{escape(p['verdict'])}\">{escape(p['verdict'])}</td>"
+                   f"<td class=\"num\" data-value=\"{p['score']:.6f}\">{_n(p['score'])} / {_n(p['max_score'])}</td>"
+                   f"<td>{_math(p.get('answer_text'), p.get('answer_mathml'))}</td>"
+                   f"<td>{escape(p['feedback'])}</td></tr>")
+    out.append("</tbody></table>")
+    if g.source:
+        out.append(f"<details><summary>the file as graded ({escape(g.path)})</summary><pre>{escape(g.source)}</pre></details>")
+    out.append("</section>")
+    return "".join(out)
+
+
+def _student(book: Gradebook, s: StudentGrade) -> str:
+    a = book.assignment
+    body = [f"<p><a href=\"../index.html\">class report</a></p>",
+            f"<h1>{escape(a.title or a.name)}: {escape(s.student)}</h1>",
+            f"<p>Total <span id=\"total\" data-value=\"{s.points:.6f}\">{_n(s.points)}</span> / {_n(s.possible)} points.</p>"]
+    body += [_problem_section(g) for g in s.problems.values()]
+    return _page(f"{s.student}: {a.title or a.name}", "\n".join(body), depth=1)
+
+
+def write_report(book: Gradebook, folder: Path) -> Path:
+    """Write the report into ``folder`` (created; an earlier report's student pages are replaced)."""
+    folder = Path(folder)
+    students = folder / "students"
+    if students.is_dir():
+        shutil.rmtree(students)
+    students.mkdir(parents=True)
+    (folder / "style.css").write_text(CSS, encoding="utf-8")
+    (folder / "report.js").write_text(SORT_JS, encoding="utf-8")
+    (folder / "index.html").write_text(_index(book), encoding="utf-8")
+    for s in book.students:
+        (students / f"{slug(s.student)}.html").write_text(_student(book, s), encoding="utf-8")
+    return folder / "index.html"
