@@ -1,63 +1,81 @@
 """Showing an answer the way lagrade understood it, before it is graded.
 
 A student who sees ``θ̇²`` where they meant ``θ̇``, or a stray symbol, knows at once what went
-wrong; velocities print with dots (θ̇, θ̈) as in the book. Unicode for the terminal, LaTeX for JSON
-and HTML.
+wrong. Coordinates print without their ``(t)`` and velocities with dots (θ̇, θ̈), as in the book;
+momenta print as p_θ. Unicode for the terminal, LaTeX for JSON and HTML. (sympy.physics.vector
+has printers that do this, but importing it costs more than half a second per check.)
 """
 
 from __future__ import annotations
 
+import re
+
 import sympy as sp
-from sympy.physics.vector.printing import VectorPrettyPrinter, vlatex
+from sympy.core.function import AppliedUndef
+from sympy.printing.pretty.pretty_symbology import greek_unicode
 
 MAX_CHARS = 1500
+_T = sp.Symbol("t")
+_GREEK_LATEX = {name for name in greek_unicode if name.islower() or name[0].isupper()}
 
 
 def _clip(text: str) -> str:
     return text if len(text) <= MAX_CHARS else text[:MAX_CHARS] + " …"
 
 
-def _greek(name: str) -> str:
-    from sympy.printing.pretty.pretty_symbology import greek_unicode
+def _unicode_name(name: str) -> str:
+    parts = re.split(r"(_|\d+)", name)
+    return "".join(greek_unicode.get(p, p) for p in parts)
 
-    return "".join(greek_unicode.get(part, part) for part in __import__("re").split(r"(\d+)", name))
+
+def _latex_name(name: str) -> str:
+    head, _, tail = name.partition("_")
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", head)
+    if m and not tail:
+        head, tail = m.group(1), m.group(2)
+    head = f"\\{head}" if head in _GREEK_LATEX and len(head) > 1 else head
+    tail = f"\\{tail}" if tail in _GREEK_LATEX and len(tail) > 1 else tail
+    return f"{head}_{{{tail}}}" if tail else head
 
 
-def _momenta_readable(expr: sp.Basic) -> sp.Basic:
-    """``p_theta(t)`` and its rate print as p_θ and ṗ_θ rather than letter-by-letter subscripts."""
+def _display(expr: sp.Basic, unicode: bool) -> sp.Basic:
+    """Replace q(t), q'(t), q''(t) by symbols whose names print in the book's notation."""
     mapping: dict[sp.Basic, sp.Basic] = {}
     for d in expr.atoms(sp.Derivative):
         f = d.expr
-        if getattr(f.func, "__name__", "").startswith("p_") and len(d.variables) == 1:
-            mapping[d] = sp.Symbol("\u1e57_" + _greek(f.func.__name__[2:]))
+        if isinstance(f, AppliedUndef) and f.args == (_T,) and all(v == _T for v in d.variables):
+            order = len(d.variables)
+            name = f.func.__name__
+            if unicode:
+                mapping[d] = sp.Symbol(_unicode_name(name) + ("\u0307" if order == 1 else "\u0308" * (order == 2)
+                                                             or f"^({order})"))
+            else:
+                accent = {1: "\\dot", 2: "\\ddot"}.get(order)
+                base = _latex_name(name)
+                mapping[d] = sp.Symbol(f"{accent}{{{base}}}" if accent else f"{base}^{{({order})}}")
     expr = expr.xreplace(mapping) if mapping else expr
-    mapping = {}
-    for a in expr.atoms(sp.Function, sp.Symbol):
-        name = getattr(a, "name", None) or getattr(a.func, "__name__", "")
-        if name.startswith("p_") and (a.is_Symbol or a.args == (sp.Symbol("t"),)):
-            mapping[a] = sp.Symbol("p_" + _greek(name[2:]))
-    return expr.xreplace(mapping) if mapping else expr
+    names = {}
+    for a in expr.atoms(AppliedUndef):
+        if a.args == (_T,):
+            names[a] = sp.Symbol(_unicode_name(a.func.__name__) if unicode else _latex_name(a.func.__name__))
+    for s in expr.free_symbols:
+        if isinstance(s, sp.Symbol) and "_" in s.name and unicode:
+            names[s] = sp.Symbol(_unicode_name(s.name))
+    return expr.xreplace(names) if names else expr
 
 
-def _structure(value: object) -> object:
-    if isinstance(value, dict):
-        return {str(getattr(k, "name", getattr(getattr(k, "func", None), "__name__", k))): _structure(v)
-                for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_structure(v) for v in value]
-    return value
+def _key(k: object) -> str:
+    return str(getattr(k, "name", None) or getattr(getattr(k, "func", None), "__name__", None) or k)
 
 
 def as_unicode(value: object) -> str:
     if isinstance(value, (bool, int, str)):
         return repr(value)
-    value = _structure(value)
     try:
-        printer = VectorPrettyPrinter({"use_unicode": True, "wrap_line": False})
-        show = lambda v: printer.doprint(_momenta_readable(sp.sympify(v)))  # noqa: E731
+        show = lambda v: sp.pretty(_display(sp.sympify(v), True), use_unicode=True, wrap_line=False)  # noqa: E731
         if isinstance(value, dict):
-            return _clip("\n".join(f"{k}: {show(v)}" for k, v in value.items()))
-        if isinstance(value, list):
+            return _clip("\n".join(f"{_key(k)}: {show(v)}" for k, v in value.items()))
+        if isinstance(value, (list, tuple)):
             return _clip("\n".join(show(v) for v in value))
         return _clip(show(value))
     except Exception:  # noqa: BLE001  (printing must never stop grading)
@@ -69,12 +87,12 @@ def as_latex(value: object) -> str:
         return r"\text{" + str(value) + "}"
     if isinstance(value, (int, str)):
         return str(value)
-    value = _structure(value)
     try:
+        show = lambda v: sp.latex(_display(sp.sympify(v), False))  # noqa: E731
         if isinstance(value, dict):
-            return _clip(r",\quad ".join(rf"\text{{{k}}}: {vlatex(sp.sympify(v))}" for k, v in value.items()))
-        if isinstance(value, list):
-            return _clip(r",\quad ".join(vlatex(sp.sympify(v)) for v in value))
-        return _clip(vlatex(sp.sympify(value)))
+            return _clip(r",\quad ".join(rf"\text{{{_key(k)}}}: {show(v)}" for k, v in value.items()))
+        if isinstance(value, (list, tuple)):
+            return _clip(r",\quad ".join(show(v) for v in value))
+        return _clip(show(value))
     except Exception:  # noqa: BLE001
         return _clip(str(value))

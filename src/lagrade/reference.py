@@ -117,18 +117,22 @@ class Mechanics:
         return compile_exprs(list(self.mass), self.args)
 
     @cached_property
-    def _force_f(self) -> Vectorized:
-        return compile_exprs(self.force, self.args)
+    def _mass_force_f(self) -> Vectorized:
+        """M and f in one compiled function: one call per right-hand side, shared subexpressions."""
+        return compile_exprs([*self.mass, *self.force], self.args)
 
     def accelerations(self, q: np.ndarray, qd: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
         """qdd for a batch of states: shapes (n, K) -> (n, K), by batched LU solves."""
         n, K = q.shape
-        argv = [*q, *qd, t, *params]
-        M = self._mass_f(*argv).reshape(n, n, K).transpose(2, 0, 1)
-        f = self._force_f(*argv).T[..., None]
+        both = self._mass_force_f(*q, *qd, t, *params)
+        f = both[n * n:]
+        if n == 1:
+            with np.errstate(all="ignore"):
+                return f / both[0]
+        M = both[:n * n].reshape(n, n, K).transpose(2, 0, 1)
         with np.errstate(all="ignore"):
             try:
-                return np.linalg.solve(M, f)[..., 0].T
+                return np.linalg.solve(M, f.T[..., None])[..., 0].T
             except np.linalg.LinAlgError:
                 return np.full((n, K), np.nan)
 

@@ -1,0 +1,137 @@
+"""Assignment weights, exports, the Gradescope entry point and the HTML report (in a real browser)."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import sqlite3
+import subprocess
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+import classgen
+from lagrade.bulk.assignment import AssignmentError, parse_assignment, points
+from lagrade.bulk.html_report import slug
+from lagrade.cli_bulk import export, grade, gradescope, report
+
+REPO = classgen.REPO
+
+
+def test_points_use_assignment_weights():
+    ap = parse_assignment({"problems": [{"id": "12.3", "weight": 10, "parts": {"L": 3}}]}).problems[0]
+    parts = [{"part": "L", "score": 0.5, "max_score": 1.0}, {"part": "eom", "score": 1.0, "max_score": 1.0}]
+    assert points(ap, parts, 2.0) == (pytest.approx(10 * (3 * 0.5 + 1) / 4), 10)
+    with pytest.raises(AssignmentError, match="listed twice"):
+        parse_assignment({"problems": [{"id": "12.3"}, {"id": "12.3"}]})
+    with pytest.raises(AssignmentError, match="accuracy"):
+        parse_assignment({"accuracy": "sloppy", "problems": [{"id": "12.3"}]})
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("small")
+    root = tmp / "submissions"
+    for student, files in {
+        "ada": {"12.43.py": REPO / "reference_solutions/12.43/answer.py",
+                "12.3.toml": REPO / "tests/answers/12.3/correct_expanded.toml"},
+        "bob": {"12.43.py": REPO / "tests/answers/12.43/wrong_sign_of_V.py",
+                "12.3.py": REPO / "tests/answers/12.3/wrong_forgets_second_spring_on_x1.py"},
+        "cy <z>": {"12.43.toml": REPO / "tests/answers/12.43/wrong_in_velocities.toml"},
+    }.items():
+        (root / student).mkdir(parents=True)
+        for name, src in files.items():
+            shutil.copyfile(src, root / student / name)
+    (root / "bob" / "essay.docx").write_bytes(b"PK")
+    hw = tmp / "hw.toml"
+    hw.write_text('name = "hw7"\ntitle = "Homework 7"\n[[problems]]\nid = "12.43"\nweight = 6\n'
+                  '[[problems]]\nid = "12.3"\nparts = { L = 1, eom = 3 }\n')
+    db = tmp / "hw.sqlite"
+    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "2"])
+    assert res.exit_code == 0, res.output
+    # by construction: ada full (6 + 2); bob 12.43: H 0, hamilton 1/2, eom 0 -> 6 * 0.5/3 = 1,
+    # bob 12.3: L 1, eom 1/2 with weights 1:3 -> 2 * (1 + 1.5)/4 = 1.25; cy 12.43: H 0 -> 4, no 12.3
+    return tmp, db, {"ada": 8.0, "bob": 2.25, "cy <z>": 4.0}
+
+
+def test_exports(graded):
+    tmp, db, totals = graded
+    runner = CliRunner()
+    canvas = runner.invoke(export, [str(db)]).output.splitlines()
+    assert canvas[:2] == ["Student,ID,SIS User ID,SIS Login ID,Section,hw7", "Points Possible,,,,,8"]
+    assert canvas[2:] == ["ada,,,ada,,8", "bob,,,bob,,2.25", "cy <z>,,,cy <z>,,4"]
+    roster = tmp / "roster.csv"
+    roster.write_text("Student,ID,SIS User ID,SIS Login ID,Section\nPoints Possible,,,,\n"
+                      "\"Lovelace, Ada\",101,S1,ada,A\n")
+    canvas = runner.invoke(export, [str(db), "--roster", str(roster)]).output.splitlines()
+    assert canvas[2] == '"Lovelace, Ada",101,S1,ada,A,8'
+    assert "skipped" not in runner.invoke(export, [str(db), "--format", "csv"]).output
+    assert "bob/essay.docx" in runner.invoke(export, [str(db), "--format", "skipped"]).output
+    res = runner.invoke(export, [str(db), "--format", "gradescope"])
+    assert res.exit_code != 0 and "--student" in res.output
+    gs = json.loads(runner.invoke(export, [str(db), "--format", "gradescope", "--student", "bob"]).output)
+    assert gs["score"] == pytest.approx(2.25)
+    assert {t["name"]: t["score"] for t in gs["tests"]} == pytest.approx(
+        {"12.43 H": 0, "12.43 hamilton": 1.0, "12.43 eom": 0, "12.3 L": 0.5, "12.3 eom": 0.75})
+
+
+def test_gradescope_entry_point(tmp_path):
+    sub = tmp_path / "submission" / "nested"
+    sub.mkdir(parents=True)
+    shutil.copyfile(REPO / "reference_solutions/12.3/answer.py", sub / "12.3.py")
+    hw = tmp_path / "assignment.toml"
+    hw.write_text('name = "hw7"\n[[problems]]\nid = "12.3"\n[[problems]]\nid = "12.43"\n')
+    out = tmp_path / "results" / "results.json"
+    res = CliRunner().invoke(gradescope, ["--submission", str(tmp_path / "submission"), "--assignment", str(hw),
+                                          "--results", str(out), "-j", "1"])
+    assert res.exit_code == 0, res.output
+    data = json.loads(out.read_text())
+    assert data["score"] == 2
+    assert [t["name"] for t in data["tests"]] == ["12.3 L", "12.3 eom", "12.43"]
+    assert data["tests"][2]["max_score"] == 3 and "No file" in data["tests"][2]["output"]
+
+
+def _chromium() -> str | None:
+    return shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
+
+
+def _dom(browser: str, url: str) -> tuple[str, str]:
+    p = subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu", "--enable-logging=stderr", "--v=0",
+                        "--virtual-time-budget=3000", "--dump-dom", url], capture_output=True, text=True, timeout=120)
+    return p.stdout, p.stderr
+
+
+@pytest.mark.skipif(_chromium() is None, reason="no chromium: apt-get install -y chromium "
+                    "(or run scripts/check_report_in_browser.sh)")
+def test_report_in_headless_chromium(graded):
+    tmp, db, totals = graded
+    folder = tmp / "report"
+    res = CliRunner().invoke(report, [str(db), "--html", str(folder)])
+    assert res.exit_code == 0, res.output
+    browser = _chromium()
+    con = sqlite3.connect(db)
+    dom, log = _dom(browser, (folder / "index.html").as_uri())
+    body = re.search(r"<body([^>]*)>", dom).group(1)
+    assert 'data-loaded="yes"' in body and 'data-errors="0"' in body and 'data-scripts="ran"' in body, body
+    assert "CONSOLE" not in log or "Uncaught" not in log, log
+    for student, total in totals.items():
+        row = re.search(rf'<tr data-student="{re.escape(student.replace("<", "&lt;").replace(">", "&gt;"))}">(.*?)</tr>',
+                        dom)
+        assert row, student
+        assert float(re.search(r'class="num total" data-value="([\d.]+)"', row.group(1)).group(1)) == \
+            pytest.approx(total)
+    n_sub = con.execute("SELECT count(*) FROM submissions WHERE problem = '12.43'").fetchone()[0]
+    assert len(re.findall(r'<rect class="bar"[^>]*data-count="(\d+)"', dom)) == 20
+    counts = [int(c) for c in re.findall(r'data-problem="12.43"[^>]*>(?:.(?!</svg>))*', dom)[0:1] and
+              re.findall(r'data-count="(\d+)"', dom.split('data-problem="12.43" width')[1].split("</svg>")[0])]
+    assert sum(counts) == n_sub
+    for student, total in totals.items():
+        dom, _ = _dom(browser, (folder / "students" / f"{slug(student)}.html").as_uri())
+        assert 'data-errors="0"' in dom
+        assert float(re.search(r'id="total" data-value="([\d.]+)"', dom).group(1)) == pytest.approx(total)
+        for part, verdict, score in con.execute("SELECT part, verdict, score FROM parts WHERE student = ?", (student,)):
+            assert f'<tr data-part="{part}">' in dom and f">{verdict}<" in dom
+        if student == "bob":
+            assert "<math" in dom and "<mover" in dom  # answers rendered as math, with dots for d/dt
