@@ -145,7 +145,9 @@ def variants(pid: str, sentinel: str, hostile: bool = True, broken: bool = True,
             out.append(Variant(f.stem, f.suffix, f.read_bytes(), full))
         elif f.stem.startswith("wrong_"):
             pinned = _expect_line(text)
-            assert set(pinned) == set(parts), f"{f}: the expect line must pin every part to derive the score"
+            if set(pinned) != set(parts) or any(v == "partial" and (pid, f.stem, k) not in PARTIAL
+                                                for k, v in pinned.items()):
+                continue  # its score cannot be derived from the file: not used (new golden files land here)
             exp = {}
             for part, verdict in pinned.items():
                 if verdict == "correct":

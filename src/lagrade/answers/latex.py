@@ -63,7 +63,6 @@ _PLACEHOLDER_LETTERS = "ABCEFGHJKLMNPQRSUVWXYZ"  # no D: sympy's lexer treats d<
 _PLACEHOLDER_PREFIX = "ZQ"
 
 _TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\s+|.", re.S)
-_NAME_RAW = re.compile(r"^[A-Za-z][A-Za-z0-9_{}]*$")
 _FUNCTION_CLASSES: dict[type, Any] = {
     sp.sin: sp.sin, sp.cos: sp.cos, sp.tan: sp.tan, sp.cot: sp.cot, sp.sec: sp.sec, sp.csc: sp.csc,
     sp.asin: sp.asin, sp.acos: sp.acos, sp.atan: sp.atan, sp.acot: sp.acot, sp.asec: sp.asec,

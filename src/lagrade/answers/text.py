@@ -258,6 +258,10 @@ def load_toml_answer(path: Path, coordinates: Sequence[str],
         m = re.search(r"line (\d+)", str(exc))
         return {}, [AnswerProblem(file=fname, line=int(m.group(1)) if m else None,
                                   message=f"not valid TOML: {exc}")]
+    latex_chars = sum(len(v) for v in _strings(data) if _looks_latex(v))
+    if latex_chars > MAX_LATEX_CHARS:  # sympy's LaTeX parser takes about 2 ms per character
+        return {}, [AnswerProblem(file=fname, line=None,
+                                  message=f"{latex_chars} characters of LaTeX; at most {MAX_LATEX_CHARS} per file")]
     lines = text.splitlines()
     values: dict[str, object] = {}
     problems: list[AnswerProblem] = []
@@ -269,6 +273,26 @@ def load_toml_answer(path: Path, coordinates: Sequence[str],
             where, message = exc.args if len(exc.args) == 2 else (line, str(exc))
             problems.append(AnswerProblem(file=fname, line=where, message=f"{key}: {message}"))
     return values, problems
+
+
+MAX_LATEX_CHARS = 8000
+
+
+def _strings(raw: Any):
+    if isinstance(raw, str):
+        yield raw
+    elif isinstance(raw, list):
+        for item in raw:
+            yield from _strings(item)
+    elif isinstance(raw, dict):
+        for item in raw.values():
+            yield from _strings(item)
+
+
+def _looks_latex(text: str) -> bool:
+    from lagrade.answers.latex import is_latex
+
+    return is_latex(text)
 
 
 def _parse_text(text: str, coordinates: Sequence[str], known: list[str] | None) -> Any:

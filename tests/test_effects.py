@@ -1,0 +1,113 @@
+"""Every scene simulates exactly the effects it declares (issue: "simulate only a scene's effects").
+
+For every problem file: the scene derives (which runs `validate_effects`: nothing used that is not
+declared), the model assembled from the declared effects contains exactly the machinery they call for,
+and it is still the scene's dynamics (same accelerations as the engine's generic derivation).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from lagrade.cli import main
+from lagrade.effects import DISSIPATION, TIME_CAPABLE, machinery
+from lagrade.library import load_problem, problem_ids
+from lagrade.numerics.model import SceneModel
+from lagrade.reference import Mechanics, SceneError
+from lagrade.sampling import rng_for, sample_points, state_arrays
+from lagrade.spec import Problem
+from lagrade.symbols import T
+
+
+@pytest.mark.parametrize("pid", problem_ids())
+def test_compiled_dynamics_contains_exactly_the_declared_effects(pid):
+    problem = load_problem(pid)
+    for system in problem.systems:
+        mech = Mechanics(problem, system)        # rejects a scene using an undeclared effect
+        model = SceneModel(mech)
+        m = machinery(mech)
+        eff = set(system.effects)
+        # what the compiled model holds is what the declarations call for, nothing more
+        assert model.time_arg == m.explicit_time
+        assert (model._Q is not None) == bool(eff & DISSIPATION) == m.velocity_forces
+        assert bool(model._mult) == bool(m.multipliers or m.contact_events)
+        assert not m.multipliers or "constraint_force" in eff
+        assert not m.contact_events or "unilateral_contact" in eff
+        # what the scene's derived dynamics use is declared
+        uses_t = any(e.has(T) for e in [*mech.force, *mech.mass])
+        assert not uses_t or eff & TIME_CAPABLE
+        assert not any(e.free_symbols & set(mech.s.qd) for e in mech.Q) or eff & DISSIPATION
+        # events: only for contact and switching of declared dissipation
+        pts = sample_points(mech, 5, rng_for(pid, system.key, "effects-test"))
+        q, qd, t, params = state_arrays(mech, pts)
+        y0 = np.concatenate([q, qd])
+        events = model.events(y0, params)
+        switching = model.branches.args if model.branches else []
+        sticking = sum(1 for s, c in zip(model.branches.sign_like, model.branches.coordinate)
+                       if s and c is not None) if model.branches else 0
+        assert len(events) == len(m.contact_events) + len(switching) + sticking
+        if not eff & ({"unilateral_contact"} | DISSIPATION):
+            assert events == []
+        # and it is still the scene's dynamics
+        t_arg = t if m.explicit_time else 0.0
+        if uses_t:
+            a_ref = mech.accelerations(q, qd, t, params)
+        else:
+            a_ref = mech.accelerations(q, qd, np.zeros_like(t), params)
+        if model.branches:   # evaluate the exact non-smooth force, not a branch
+            model.branches.sigma = np.zeros((len(model.branches.args), 0))
+        a = model.accelerations(q, qd, t_arg, params)
+        np.testing.assert_allclose(a, a_ref, rtol=1e-9, atol=1e-9)
+
+
+def _problem(effects, T="m*x_d**2/2", V="k*x**2/2", Q=None, constraints=None, coords=("x",)):
+    system = {"effects": effects, "T": T, "V": V, "coordinates": [{"name": c} for c in coords]}
+    if Q:
+        system["Q"] = Q
+    if constraints:
+        system["constraints"] = constraints
+    return Problem.model_validate({
+        "id": "12.99", "title": "test scene",
+        "parameters": [{"name": "m"}, {"name": "k"}, {"name": "c"}, {"name": "g"}],
+        "systems": [system], "parts": [{"name": "L", "kind": "lagrangian"}]})
+
+
+@pytest.mark.parametrize("kwargs, says", [
+    (dict(effects=["spring"], V="k*x**2/2*exp(-t)"), "depend(s) on t explicitly"),
+    (dict(effects=["spring", "applied_force"], Q={"x": "-c*x_d"}), "velocity-dependent force"),
+    (dict(effects=["spring"], Q={"x": "-c*x"}), "declare applied_force"),
+    (dict(effects=["spring", "dissipation_drag"], Q={"x": "-c*sign(x_d)"}), "declare dissipation_friction"),
+    (dict(effects=["spring", "holonomic_constraint"], coords=("x", "y"), T="m*(x_d**2 + y_d**2)/2",
+          constraints=[{"coordinate": "y", "value": "c*x", "multiplier": "lam"}]), "declare constraint_force"),
+    (dict(effects=["spring"], coords=("x", "y"), T="m*(x_d**2 + y_d**2)/2",
+          constraints=[{"coordinate": "y", "value": "c*x"}]), "declare holonomic_constraint"),
+    (dict(effects=["spring", "holonomic_constraint"], coords=("x", "y"), T="m*(x_d**2 + y_d**2)/2",
+          constraints=[{"coordinate": "y", "value": "c*t"}]), "declare time_dependent_constraint"),
+    (dict(effects=["spring"], V="k*x**2/2 + m*g*x"), "declare gravity"),
+])
+def test_a_scene_using_an_undeclared_effect_is_rejected_at_load_with_a_clear_message(kwargs, says):
+    problem = _problem(**kwargs)
+    with pytest.raises(SceneError, match="uses effects it does not declare") as err:
+        Mechanics(problem, problem.systems[0])
+    assert says in str(err.value)
+
+
+def test_a_scene_declaring_its_effects_loads():
+    problem = _problem(["spring", "dissipation_drag"], Q={"x": "-c*x_d*Abs(x_d)"})
+    model = SceneModel(Mechanics(problem, problem.systems[0]))
+    assert model.machinery.velocity_forces and model.machinery.switching == ("x_d",)
+
+
+def test_show_lists_the_declared_effects():
+    out = CliRunner().invoke(main, ["show", "12.4"]).output
+    assert "effects: gravity, holonomic_constraint, constraint_force, unilateral_contact" in out
+
+
+def test_bench_effects_prints_machinery_and_costs():
+    from lagrade.cli_bench import bench
+
+    res = CliRunner().invoke(bench, ["effects", "12.4", "--repeat", "1"])
+    assert res.exit_code == 0, res.output
+    assert "contact-loss events: lam = 0" in res.output and "all/declared" in res.output
