@@ -201,3 +201,13 @@ def _fail(message: str, as_json: bool) -> None:
         click.echo(f"lagrade: {message}", err=True)
     sys.exit(2)
 
+
+def _register() -> None:
+    """Bulk grading and numerics benchmarks live in their own modules; the group only lists them."""
+    from lagrade.cli_bulk import export, grade, gradescope, report
+
+    for command in (grade, export, report, gradescope):
+        main.add_command(command)
+
+
+_register()

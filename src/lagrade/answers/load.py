@@ -36,6 +36,10 @@ class LoadedAnswer:
     fatal: AnswerProblem | None = None
     #: a problem that concerns one part only (a text answer that does not parse)
     part_problems: dict[str, AnswerProblem] = field(default_factory=dict)
+    #: how the sandbox run ended (ok, error, timeout, memory, crashed, rejected); "ok" for text answers
+    status: str = "ok"
+    #: what the answer printed (truncated)
+    stdout: str = ""
 
 
 def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
@@ -59,11 +63,14 @@ def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
                     out.part_problems[names[name]] = prob
         if any(prob.line is None for prob in problems):
             out.fatal = next(prob for prob in problems if prob.line is None)
+        if not raw and problems:  # the file is not TOML at all: nothing in it can be graded
+            out.fatal, out.status = problems[0], "error"
     elif path.suffix == ".py":
         from lagrade.answers.sandbox import SandboxLimits, run_answer_file
 
         outcome = run_answer_file(path, list(names), limits or SandboxLimits())
         problems = list(outcome.problems)
+        out.status, out.stdout = outcome.status, outcome.stdout
         if outcome.status != "ok" and problems:
             out.fatal = problems[0]
         raw = {}

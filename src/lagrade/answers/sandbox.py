@@ -302,6 +302,17 @@ def _readable_dirs() -> tuple[str, ...]:
     return tuple(sorted({os.path.realpath(d) for d in dirs}))
 
 
+def _secret_dirs() -> tuple[str, ...]:
+    """Reference solutions and problem files, wherever lagrade is installed: never readable by an answer
+    (a wheel puts them in site-packages, which is otherwise readable)."""
+    from lagrade.library import problem_dirs, reference_dir
+
+    return tuple(sorted({os.path.realpath(d) for d in (reference_dir(), *problem_dirs())}))
+
+
+_SECRET_DIRS = _secret_dirs()
+
+
 def _try_import(module: str) -> types.ModuleType | None:
     try:
         return __import__(module)
@@ -532,7 +543,7 @@ class _AuditPolicy:
             real = os.path.realpath(os.fsdecode(path))
         except (TypeError, ValueError, OSError):
             return False
-        return _under(real, self.readable)
+        return _under(real, self.readable) and not _under(real, _SECRET_DIRS)
 
 
 # --------------------------------------------------------------------------- running and encoding

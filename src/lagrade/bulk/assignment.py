@@ -11,6 +11,10 @@ wall_seconds = 20
 memory_mb = 1024
 grading_seconds = 120              # time to grade the values once the file has run
 
+[credit]                           # optional partial-credit policy (lagrade.credit.Credit)
+scaled_lagrangian = 0.5            # L = c * (the right L), c != 1
+per_equation = true                # each right equation / entry earns its share
+
 [[problems]]
 id = "12.22"
 weight = 5                         # points for this problem (default: the problem's own total)
@@ -31,6 +35,8 @@ from pathlib import Path
 from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+
+from lagrade.credit import Credit
 
 
 class AssignmentError(ValueError):
@@ -76,6 +82,8 @@ class Assignment(BaseModel):
     title: str = ""
     accuracy: Literal["fast", "default", "strict"] = "default"
     limits: Limits = Limits()
+    #: partial-credit policy (lagrade.credit.Credit); the defaults are documented in the README
+    credit: Credit = Credit()
     problems: list[AssignedProblem] = Field(min_length=1)
 
     @model_validator(mode="after")
@@ -95,10 +103,12 @@ class Assignment(BaseModel):
         """What a stored grade of ``problem_id`` depends on, besides the file and the grader version.
 
         The problem file itself (an instructor fixing a reference regrades that problem), the
-        accuracy setting and the limits; not the weights, which only scale points.
+        accuracy setting, the limits and the partial-credit policy; not the weights, which only
+        scale points.
         """
         key = json.dumps({"problem": problem_id, "source": problem_source, "accuracy": self.accuracy,
-                          "limits": self.limits.model_dump(mode="json")}, sort_keys=True)
+                          "limits": self.limits.model_dump(mode="json"),
+                          "credit": self.credit.model_dump(mode="json")}, sort_keys=True)
         return hashlib.sha256(key.encode()).hexdigest()[:16]
 
     def problem(self, pid: str) -> AssignedProblem:

@@ -63,6 +63,7 @@ class Plan:
     def job(self, sub: Submission) -> dict[str, Any]:
         return {"student": sub.student, "problem": sub.problem, "suffix": sub.suffix, "data": sub.data,
                 "accuracy": self.assignment.accuracy, "limits": self.assignment.limits.model_dump(),
+                "credit": self.assignment.credit.model_dump(),
                 "parts": self.parts[sub.problem], "file_hash": sub.sha256}
 
 

@@ -60,6 +60,7 @@ class Grader:
     def grade(self, job: dict[str, Any]) -> dict[str, Any]:
         from lagrade.answers.load import load_answer
         from lagrade.answers.sandbox import SandboxLimits
+        from lagrade.credit import Credit
         from lagrade.grade import grade_values
 
         start = time.monotonic()
@@ -74,7 +75,8 @@ class Grader:
             loaded = load_answer(path, problem, SandboxLimits(cpu_seconds=limits["cpu_seconds"],
                                                                wall_seconds=limits["wall_seconds"],
                                                                memory_mb=limits["memory_mb"]))
-            result = grade_values(problem, loaded, job["accuracy"])
+            result = grade_values(problem, loaded, job["accuracy"],
+                                  credit=Credit.model_validate(job["credit"]) if job.get("credit") else None)
             parts = []
             for p in result.parts:
                 row = p.model_dump(exclude={"read_as"})

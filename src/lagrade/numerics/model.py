@@ -129,16 +129,17 @@ class SceneModel:
         M = self._mass(*argv).reshape(n, n, K)
         f = self._force(*argv)
         if self._Q is not None:
+            armed = True
             if sigma is not None:
                 sg = sigma
             elif self.branches.sigma.shape[1] == K:
                 sg = self.branches.sigma
-            elif self._switch is not None:   # no events armed: the exact non-smooth force
-                sg = np.sign(self._switch(*argv))
+            elif self._switch is not None:   # no events armed: the exact non-smooth force, no sticking
+                sg, armed = np.sign(self._switch(*argv)), False
             else:
                 sg = np.zeros((0, K))
             f = f + self._Q(*argv, *sg)
-            stuck = self._stuck(sg)
+            stuck = self._stuck(sg) if armed else None
             if stuck is not None:
                 for i, k in zip(*np.nonzero(stuck)):
                     M[i, :, k] = 0.0
