@@ -15,9 +15,27 @@ import sympy as sp
 Vectorized = Callable[..., np.ndarray]
 
 
+_COMPILED: dict[tuple, Vectorized] = {}
+_COMPILED_MAX = 2048
+
+
 def compile_exprs(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
-    """``f(*arrays) -> ndarray of shape (len(exprs), K)``, broadcasting constants over the batch."""
+    """``f(*arrays) -> ndarray of shape (len(exprs), K)``, broadcasting constants over the batch.
+
+    Memoized: the reference side of a problem compiles the same expressions for every answer, and
+    in a bulk run that is most of the compiling (lambdify costs milliseconds per expression)."""
     exprs = [sp.sympify(e) for e in exprs]
+    key = (tuple(exprs), tuple(args))
+    hit = _COMPILED.get(key)
+    if hit is not None:
+        return hit
+    if len(_COMPILED) >= _COMPILED_MAX:
+        _COMPILED.pop(next(iter(_COMPILED)))
+    _COMPILED[key] = made = _compile(exprs, args)
+    return made
+
+
+def _compile(exprs: list[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
     if not exprs:
         return lambda *arrays: np.zeros((0, np.broadcast(*arrays).size if arrays else 1))
     raw = sp.lambdify(list(args), exprs, modules="numpy", cse=True, docstring_limit=0)

@@ -43,6 +43,8 @@ class Mechanics:
     def __init__(self, problem: Problem, system: System):
         self.problem = problem
         self.system = system
+        self._parsed: dict[tuple, sp.Expr] = {}
+        self._points: dict[tuple, object] = {}
         self.all_names = tuple(c.name for c in system.coordinates)
         self.names = tuple(c.name for c in system.free_coordinates)
         self.full = StateSymbols(self.all_names)
@@ -103,8 +105,12 @@ class Mechanics:
             raise SceneError(f"system '{self.system.key}', {what}: {exc}") from None
 
     def parse(self, text: str, extra: Sequence[str] = ()) -> sp.Expr:
-        """Parse a reference expression of this system (may use ``q_dd`` and multipliers)."""
-        return self._parse(text, "reference", [p.name for p in self.problem.parameters] + list(extra))
+        """Parse a reference expression of this system (may use ``q_dd`` and multipliers); cached,
+        since every answer to the problem is compared with the same references."""
+        key = (text, tuple(extra))
+        if key not in self._parsed:
+            self._parsed[key] = self._parse(text, "reference", [p.name for p in self.problem.parameters] + list(extra))
+        return self._parsed[key]
 
     # ----- numerical forms ---------------------------------------------------------------
     @property

@@ -21,8 +21,14 @@ from lagrade.symbols import T
 
 
 def _domain(ctx: Context, part: Part, mech: Mechanics) -> tuple[Points, list[sp.Symbol]]:
-    pts = with_reference_dynamics(mech, sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name),
-                                                      extra=part.symbols))
+    """The part's sampled points with the reference dynamics at them: the same for every answer
+    (seeded by problem and part), so made once per process; each caller gets its own copy."""
+    key = (ctx.problem.id, part.name, ctx.points)
+    if key not in mech._points:
+        mech._points[key] = with_reference_dynamics(
+            mech, sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name), extra=part.symbols))
+    cached = mech._points[key]
+    pts = Points(dict(cached.values), cached.K)
     return pts, list(pts.values)
 
 
