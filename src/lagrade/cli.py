@@ -204,9 +204,10 @@ def _fail(message: str, as_json: bool) -> None:
 
 def _register() -> None:
     """Bulk grading and numerics benchmarks live in their own modules; the group only lists them."""
+    from lagrade.cli_bench import bench
     from lagrade.cli_bulk import export, grade, gradescope, report
 
-    for command in (grade, export, report, gradescope):
+    for command in (grade, export, report, gradescope, bench):
         main.add_command(command)
 
 

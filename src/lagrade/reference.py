@@ -139,8 +139,14 @@ class Mechanics:
         with np.errstate(all="ignore"):
             try:
                 return np.linalg.solve(M, f.T[..., None])[..., 0].T
-            except np.linalg.LinAlgError:
-                return np.full((n, K), np.nan)
+            except np.linalg.LinAlgError:  # one singular state must not poison the whole batch
+                out = np.full((n, K), np.nan)
+                for k in range(K):
+                    try:
+                        out[:, k] = np.linalg.solve(M[k], f[:, k])
+                    except np.linalg.LinAlgError:
+                        pass
+                return out
 
     @cached_property
     def _momentum_f(self) -> Vectorized:
