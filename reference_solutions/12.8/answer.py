@@ -1,4 +1,4 @@
-"""Problem 12.8: point mass on a free wedge. (a) plane face at alpha, (b) convex quarter-circle face.
+"""Problem 12.8: point mass on a free wedge. (a) plane face at angle theta, (b) convex quarter-circle face.
 
 (a) m at (x1 + x2 cos a, -x2 sin a): v^2 = x1'^2 + 2 cos(a) x1' x2' + x2'^2.
 (b) m at (X + R sin th, R cos th): v^2 = X'^2 + 2 R cos(th) X' th' + R^2 th'^2.
@@ -6,7 +6,8 @@
 from sympy import Eq, Function, cos, sin, symbols
 
 t = symbols("t")
-m, M, g, alpha, R = symbols("m M g alpha R", positive=True)
+m, M, g, R = symbols("m M g R", positive=True)
+alpha = symbols("theta", positive=True)  # (a): the incline angle, named theta like the catalogue
 x1, x2 = Function("x1")(t), Function("x2")(t)
 X, th = Function("X")(t), Function("theta")(t)
 

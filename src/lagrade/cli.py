@@ -95,6 +95,8 @@ def show(problem_id: str, problems_dir: tuple[Path, ...]) -> None:
         for c in s.constraints:
             out.append(f"  constraint: {c.coordinate} = {c.value}" +
                        (f"  (multiplier {c.multiplier})" if c.multiplier else ""))
+        for q in s.parameters:
+            out.append(f"  parameter {q.name:<10} {q.description}{' (> 0)' if q.positive else ''}")
         out.append(f"  effects: {', '.join(s.effects) or 'none'}")
         out.append("")
     out.append("Parts (bind these names in answer.py):")
@@ -123,6 +125,10 @@ def template(problem_id: str, problems_dir: tuple[Path, ...]) -> None:
     params = " ".join(q.name for q in p.parameters)
     if params:
         lines.append(f"{', '.join(q.name for q in p.parameters)} = parameters(\"{params}\")")
+    for s in p.systems:
+        if s.parameters:
+            names = [q.name for q in s.parameters]
+            lines.append(f"# system ({s.key}) only: {', '.join(names)} = parameters(\"{' '.join(names)}\")")
     for s in p.systems:
         names = [c.name for c in s.coordinates]
         if s.key:

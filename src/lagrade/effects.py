@@ -117,7 +117,7 @@ def validate_effects(mech: Mechanics) -> None:
     if mech.multipliers and "constraint_force" not in eff:
         problems.append(f"multiplier(s) {', '.join(map(str, mech.multipliers))} (constraint forces) are asked: declare "
                         "constraint_force")
-    if "g" in {str(s) for s in mech.L_full.free_symbols} and "g" in {p.name for p in mech.problem.parameters} \
+    if "g" in {str(s) for s in mech.L_full.free_symbols} and "g" in {p.name for p in mech.parameters} \
             and "gravity" not in eff:
         problems.append("V uses g: declare gravity")
     if any(p.linearized and p.system == sys_.key for p in mech.problem.parts) \

@@ -49,9 +49,10 @@ class Mechanics:
         self.names = tuple(c.name for c in system.free_coordinates)
         self.full = StateSymbols(self.all_names)
         self.s = StateSymbols(self.names)
-        self.params = [sp.Symbol(p.name) for p in problem.parameters]
+        self.parameters = problem.parameters_of(system.key)
+        self.params = [sp.Symbol(p.name) for p in self.parameters]
         self.multipliers = [sp.Symbol(c.multiplier) for c in system.constraints if c.multiplier]
-        known = [p.name for p in problem.parameters]
+        known = [p.name for p in self.parameters]
         parse = lambda text, what: self._parse(text, what, known)  # noqa: E731
 
         if system.L is not None:
@@ -109,7 +110,7 @@ class Mechanics:
         since every answer to the problem is compared with the same references."""
         key = (text, tuple(extra))
         if key not in self._parsed:
-            self._parsed[key] = self._parse(text, "reference", [p.name for p in self.problem.parameters] + list(extra))
+            self._parsed[key] = self._parse(text, "reference", [p.name for p in self.parameters] + list(extra))
         return self._parsed[key]
 
     # ----- numerical forms ---------------------------------------------------------------

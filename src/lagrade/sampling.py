@@ -39,7 +39,7 @@ def sample_points(mech: Mechanics, K: int, rng: np.random.Generator, extra: list
     """States (q, qd, qdd, p, t) and parameters; ``qdd`` random (for identities in the accelerations)
     and ``qdd_ref`` the accelerations the reference dynamics gives at those states."""
     vals: dict[sp.Symbol, np.ndarray] = {}
-    for p in mech.problem.parameters:
+    for p in mech.parameters:
         vals[sp.Symbol(p.name)] = rng.uniform(*p.sample, K)
     for name in extra:
         vals.setdefault(sp.Symbol(name), rng.uniform(0.5, 1.5, K))

@@ -115,6 +115,9 @@ class System(_Strict):
 
     key: str = ""
     title: str = ""
+    #: parameters of this system only (added to the problem's): lettered systems may reuse a name
+    #: that is a coordinate in another system (12.8: theta is (a)'s incline angle, (b)'s coordinate)
+    parameters: list[Parameter] = []
     coordinates: list[Coordinate]
     effects: list[Effect] = []
     L: str | None = None
@@ -214,9 +217,13 @@ class Problem(_Strict):
         names = [p.name for p in self.parts] + [a for p in self.parts for a in p.aliases]
         if len(set(names)) != len(names):
             raise ValueError(f"part names and aliases repeat: {names}")
-        pnames = [p.name for p in self.parameters]
-        if len(set(pnames)) != len(pnames):
-            raise ValueError(f"parameter names repeat: {pnames}")
+        for system in self.systems:
+            pnames = [p.name for p in self.parameters_of(system.key)]
+            if len(set(pnames)) != len(pnames):
+                raise ValueError(f"parameter names repeat in system '{system.key}': {pnames}")
+            clash = set(pnames) & {c.name for c in system.coordinates}
+            if clash:
+                raise ValueError(f"system '{system.key}': {sorted(clash)} is both a coordinate and a parameter")
         for part in self.parts:
             if part.system not in keys:
                 raise ValueError(f"part '{part.name}' refers to unknown system '{part.system}'")
@@ -224,6 +231,10 @@ class Problem(_Strict):
             if part.linearized and not system.equilibrium:
                 raise ValueError(f"part '{part.name}' is linearized but system '{part.system}' has no equilibrium")
         return self
+
+    def parameters_of(self, key: str) -> list[Parameter]:
+        """The problem's parameters and the system's own, in that order."""
+        return [*self.parameters, *self.system(key).parameters]
 
     def system(self, key: str) -> System:
         for s in self.systems:

@@ -53,7 +53,8 @@ def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
         coords = sorted({c.name for s in problem.systems for c in s.coordinates})
         # momenta are functions of t too, so that Derivative(p_q(t), t) reads in Hamilton's equations
         functions = coords + [f"p_{c}" for c in coords]
-        known = [p.name for p in problem.parameters] + [f"delta_{c}" for c in coords] + \
+        known = sorted({p.name for s in problem.systems for p in problem.parameters_of(s.key)}) + \
+            [f"delta_{c}" for c in coords] + \
             [s for part in problem.parts for s in part.symbols] + ["t"]
         raw, problems = load_toml_answer(path, functions, known)
         text = path.read_text(encoding="utf-8", errors="replace")

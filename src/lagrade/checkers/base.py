@@ -7,6 +7,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from lagrade.compare.trajectory import ACCURACY, Accuracy
 from lagrade.credit import Credit
@@ -43,7 +44,7 @@ class Context:
 
     @property
     def positive(self) -> set[str]:
-        return {p.name for p in self.problem.parameters if p.positive}
+        return {p.name for s in self.problem.systems for p in self.problem.parameters_of(s.key) if p.positive}
 
 
 def result(part: Part, verdict: str, fraction: float, method: Method, feedback: str) -> PartResult:
@@ -96,8 +97,14 @@ def read_expr(value: object, part: Part, mech: Mechanics, *, plain_coordinates: 
 
 def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates: bool, momenta: bool = False,
                max_order: int = 2, extra: Iterable[str] = ()) -> sp.Expr:
-    params = [p.name for p in mech.problem.parameters]
+    params = [p.name for p in mech.parameters]
     coords = list(mech.names)
+    # A text answer reads every coordinate name of the problem as a function of t; in a system where
+    # that name is a parameter (12.8: theta), it is the parameter.
+    stray = {f: sp.Symbol(f.func.__name__) for f in expr.atoms(AppliedUndef)
+             if f.func.__name__ in params and f.args == (sp.Symbol("t"),)}
+    if stray:
+        expr = expr.xreplace(stray)
     allowed = {*params, "t", *part.symbols, *extra, *mech.all_names}
     if momenta:
         allowed |= {f"p_{n}" for n in coords}

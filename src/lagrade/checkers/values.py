@@ -158,7 +158,7 @@ def check_expression(ctx: Context, part: Part, value: object) -> PartResult:
 
 def _is_definition(eq: sp.Equality, mech: Mechanics, part: Part) -> bool:
     """``Eq(a, <expr>)`` where ``a`` is not a known name: the student named the result."""
-    known = {p.name for p in mech.problem.parameters} | set(mech.all_names) | {"t"}
+    known = {p.name for p in mech.parameters} | set(mech.all_names) | {"t"}
     return isinstance(eq.lhs, sp.Symbol) and eq.lhs.name not in known
 
 

@@ -1,7 +1,8 @@
 # (a) unsolved Lagrange equations, multiplied through; (b) solved for the accelerations; L_b plus d/dt(X*t).
 from lagrade.answer import *
 
-m, M, g, alpha, R = parameters("m M g alpha R")
+m, M, g, R = parameters("m M g R")
+alpha = Symbol("theta")  # (a): the incline angle is the parameter theta
 x1, x2, X, theta = coordinates("x1 x2 X theta")
 L_a = (M + m) * dot(x1) ** 2 / 2 + m * dot(x2) ** 2 / 2 + m * cos(alpha) * dot(x1) * dot(x2) + m * g * x2 * sin(alpha)
 eom_a = [

@@ -2,7 +2,8 @@
 # (a) The face taken to descend toward -x1 while keeping x2's definition: cross term with the wrong sign.
 from lagrade.answer import *
 
-m, M, g, alpha, R = parameters("m M g alpha R")
+m, M, g, R = parameters("m M g R")
+alpha = Symbol("theta")  # (a): the incline angle is the parameter theta
 x1, x2, X, theta = coordinates("x1 x2 X theta")
 L_a = (M + m) * dot(x1) ** 2 / 2 + m * dot(x2) ** 2 / 2 - m * cos(alpha) * dot(x1) * dot(x2) + m * g * x2 * sin(alpha)
 eom_a = [Eq((M + m) * dot(x1, 2) - m * cos(alpha) * dot(x2, 2), 0),
