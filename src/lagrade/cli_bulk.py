@@ -6,7 +6,6 @@ deferred so that ``lagrade --help`` stays fast.
 
 from __future__ import annotations
 
-import os
 import shutil
 import sys
 import tempfile

@@ -17,7 +17,6 @@ from lagrade.reference import Mechanics
 from lagrade.result import PartResult
 from lagrade.sampling import Points, rng_for, sample_points, with_reference_dynamics
 from lagrade.spec import Part
-from lagrade.symbols import T
 
 
 def _domain(ctx: Context, part: Part, mech: Mechanics) -> tuple[Points, list[sp.Symbol]]:

@@ -12,11 +12,11 @@ in one run, side by side:
 
 from __future__ import annotations
 
-import time
 from dataclasses import dataclass, replace
 
 import numpy as np
 
+from lagrade.numerics.workprecision import _timed
 from lagrade.compare.trajectory import ACCURACY, integrate
 from lagrade.library import load_problem
 from lagrade.numerics.model import SceneModel
@@ -42,15 +42,6 @@ class EffectsRow:
         return self.ms_all / self.ms_declared
 
 
-def _best(fn, repeat):
-    best, out = float("inf"), None
-    for _ in range(repeat):
-        start = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - start)
-    return out, best
-
-
 def compare_scene(pid: str, key: str | None = None, K: int = 4, repeat: int = 3) -> EffectsRow:
     problem = load_problem(pid)
     system = problem.systems[0] if key is None else problem.system(key)
@@ -65,13 +56,13 @@ def compare_scene(pid: str, key: str | None = None, K: int = 4, repeat: int = 3)
         return integrate(model.rates(params), y0, system.horizon, acc, events=model.events(y0, params))
 
     declared, everything = SceneModel(mech), SceneModel(mech, everything=True)
-    r_d, t_d = _best(lambda: run_model(declared), repeat)
-    r_a, t_a = _best(lambda: run_model(everything), repeat)
+    r_d, t_d = _timed(lambda: run_model(declared), repeat)
+    r_a, t_a = _timed(lambda: run_model(everything), repeat)
 
     def engine(t, Y):
         return np.concatenate([Y[n:], mech.accelerations(Y[:n], Y[n:], np.full(Y.shape[1], t), params)])
 
-    r_e, t_e = _best(lambda: integrate(engine, y0, system.horizon, acc), repeat)
+    r_e, t_e = _timed(lambda: integrate(engine, y0, system.horizon, acc), repeat)
     return EffectsRow(f"{pid}{system.key}", list(system.effects), declared.machinery.lines(),
                       1e3 * t_d / K, 1e3 * t_a / K, 1e3 * t_e / K, r_d.rhs_evals, r_a.rhs_evals, r_e.rhs_evals, K)
 
