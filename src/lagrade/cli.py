@@ -183,7 +183,8 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     except (ValueError, OSError) as exc:
         _fail(f"{credit_file}: {exc}", as_json)
     loaded = load_answer(answer, p)
-    result = grade_values(p, loaded, accuracy, list(only) or None, hints=hints, credit=credit)
+    result = grade_values(p, loaded, accuracy, list(only) or None, hints=hints, credit=credit,
+                          read_as=("latex",) if as_json else ("unicode",))
     if plot_file is not None:
         from lagrade.plot import plot_result
 

@@ -37,7 +37,10 @@ def _unusable(part, verdict: str, feedback: str) -> PartResult:
 
 
 def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "default",
-                 only: list[str] | None = None, hints: bool = False, credit: Credit | None = None) -> CheckResult:
+                 only: list[str] | None = None, hints: bool = False, credit: Credit | None = None,
+                 read_as: tuple[str, ...] = ("latex", "unicode")) -> CheckResult:
+    """Grade every part; ``read_as`` says which echoes of the answer to render (pretty-printing a
+    long expression can cost a tenth of a second, so a caller asks only for what it shows)."""
     ctx = Context(problem, references(problem), ACCURACY[accuracy], hints=hints, credit=credit or Credit())
     parts = []
     for part in problem.parts:
@@ -64,8 +67,10 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
                 raise
             graded_part = _unusable(part, "invalid", f"lagrade could not grade this part ({type(exc).__name__}: "
                                                      f"{exc}); please report it to your instructor")
-        graded_part.read_as = as_latex(value)
-        graded_part.read_as_text = as_unicode(value)
+        if "latex" in read_as:
+            graded_part.read_as = as_latex(value)
+        if "unicode" in read_as:
+            graded_part.read_as_text = as_unicode(value)
         parts.append(graded_part)
     return CheckResult(problem=problem.id, score=round(sum(p.score for p in parts), 6),
                        max_score=sum(p.max_score for p in parts), parts=parts,

@@ -38,8 +38,9 @@ def _grouped_points(ctx: Context, mech: Mechanics, part: Part, groups: int = 6, 
 
 
 def _trajectory_inits(ctx: Context, mech: Mechanics, part: Part):
-    pts = sample_points(mech, ctx.accuracy.trajectories, rng_for(ctx.problem.id, part.name, "trajectory"),
-                        extra=part.symbols)
+    """Initial states per system (not per part), so that L, eom and H share one reference motion."""
+    pts = sample_points(mech, ctx.accuracy.trajectories,
+                        rng_for(ctx.problem.id, mech.system.key, "trajectory", *part.symbols), extra=part.symbols)
     q, qd, _, params = state_arrays(mech, pts)
     extra = np.array([pts[sp.Symbol(s)] for s in part.symbols]).reshape(len(part.symbols), pts.K)
     return q, qd, params, extra
@@ -65,7 +66,8 @@ def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc)
     labels = [*mech.names, *(f"{x}'" for x in mech.names)]
     ref = _reference_lagrange(mech, params)
     y0 = np.concatenate([q, qd])
-    comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
+    comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy,
+                              reference_key=(id(mech), "lagrange", tuple(part.symbols)))
     comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
     return comparison
 
@@ -84,7 +86,8 @@ def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rate
 
     labels = [*mech.names, *(f"p_{x}" for x in mech.names)]
     y0 = np.concatenate([q, p])
-    comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
+    comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy,
+                              reference_key=(id(mech), "hamilton", tuple(part.symbols)))
     comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
     return comparison
 

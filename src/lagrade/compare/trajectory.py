@@ -466,13 +466,33 @@ def _displaced(y0: np.ndarray, seed: int = 12) -> np.ndarray:
     return y0 + 1e-7 * d * (1.0 + np.abs(y0))
 
 
+#: Reference integrations keyed by what determines them (problem, system, route, initial states,
+#: accuracy): every answer to a problem is compared with the same reference motion.
+_REFERENCE_RUNS: dict[object, tuple] = {}
+
+
 def compare_runs(student: Rates, reference: Rates, y0: np.ndarray, labels: list[str], horizon: float,
-                 acc: Accuracy, *, chaos: bool | None = None, events: Sequence[BatchedEvent] = ()) -> Comparison:
+                 acc: Accuracy, *, chaos: bool | None = None, events: Sequence[BatchedEvent] = (),
+                 reference_key: object = None) -> Comparison:
     """Integrate both from ``y0`` and compare; ``labels`` names each state component.
 
     ``chaos``: measure the amplification of small displacements along the reference and compare only
     where it keeps correct integrations within tolerance (None: when the phase space allows chaos).
+    ``reference_key``: when given, the reference integration is made once per key and reused.
     """
+    key = (reference_key, acc, horizon) if reference_key is not None else None
+    if key is not None and key in _REFERENCE_RUNS:
+        ref, method, window, why, amp = _REFERENCE_RUNS[key]
+    else:
+        ref, method, window, why, amp = _reference_run(reference, y0, horizon, acc, chaos, events)
+        if key is not None:
+            _REFERENCE_RUNS[key] = (ref, method, window, why, amp)
+    return _compare_to_reference(student, ref, y0, labels, horizon, acc, method, window, why, amp, events)
+
+
+def _reference_run(reference: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, chaos: bool | None,
+                   events: Sequence[BatchedEvent]):
+    """The reference motion, with the method, comparison window and the reason for the window."""
     dim, K = y0.shape
     chaos = acc.chaos_window and (may_be_chaotic(reference, y0, horizon) if chaos is None else chaos)
     method = acc.method
@@ -505,6 +525,11 @@ def compare_runs(student: Rates, reference: Rates, y0: np.ndarray, labels: list[
     else:
         ref = integrate(reference, y0, window, acc, method=method, events=events)
     ref.rhs_evals += pre
+    return ref, method, window, why, amp
+
+
+def _compare_to_reference(student: Rates, ref: Run, y0: np.ndarray, labels: list[str], horizon: float,
+                          acc: Accuracy, method: str, window: float, why: str, amp, events) -> Comparison:
     common = dict(seconds=ref.seconds, rhs_evals=ref.rhs_evals, method=method, rtol=acc.rtol, window=window,
                   why_window=why, ftle=float(np.nanmax(amp.ftle)) if amp is not None else None)
     if not ref.ok:
