@@ -65,3 +65,29 @@ def test_hints_name_the_missing_term_without_its_coefficient():
     assert "a potential term in theta2 is missing" in feedback, feedback
     assert "m2*g*l2" not in feedback and "g*l2*m2" not in feedback
     assert "Hint" not in lagrade.check("12.14", L=L).parts[0].feedback  # only with --hints
+
+
+def _L14(extra=0, factor_term=None, factor=1):
+    t = sp.Symbol("t")
+    m1, m2, l1, l2, g = sp.symbols("m1 m2 l1 l2 g")
+    th1, th2 = sp.Function("theta1")(t), sp.Function("theta2")(t)
+    w1, w2 = th1.diff(t), th2.diff(t)
+    terms = [(m1 + m2) / 2 * l1**2 * w1**2, m2 / 2 * l2**2 * w2**2, m2 * l1 * l2 * w1 * w2 * sp.cos(th1 - th2),
+             (m1 + m2) * g * l1 * sp.cos(th1), m2 * g * l2 * sp.cos(th2)]
+    if factor_term is not None:
+        terms[factor_term] *= factor
+    return sp.Add(*terms) + extra
+
+
+def test_hint_for_an_extra_term_quotes_the_students_term():
+    t = sp.Symbol("t")
+    extra = sp.Symbol("m1") * sp.Function("theta1")(t) ** 2
+    feedback = lagrade.check("12.14", L=_L14(extra=extra), hints=True).parts[0].feedback
+    assert "your term m1*theta1**2 should not be there" in feedback, feedback
+
+
+def test_hint_for_a_wrong_factor_and_a_wrong_sign():
+    feedback = lagrade.check("12.14", L=_L14(factor_term=1, factor=2), hints=True).parts[0].feedback
+    assert "is 2 times what it should be" in feedback, feedback
+    feedback = lagrade.check("12.14", L=_L14(factor_term=4, factor=-1), hints=True).parts[0].feedback
+    assert "has the wrong sign" in feedback, feedback
