@@ -11,7 +11,6 @@ import sys
 from pathlib import Path
 
 import click
-from rich.console import Console
 
 from lagrade import __version__
 from lagrade.spec import Problem, SpecError
@@ -195,6 +194,8 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
         click.echo(result.model_dump_json())
     else:
         from lagrade.report import render
+
+        from rich.console import Console  # only for people: --json never pays for it
 
         render(result, Console(highlight=False))
     unusable = loaded.fatal is not None and not loaded.values
