@@ -67,9 +67,20 @@ def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc)
     ref = _reference_lagrange(mech, params)
     y0 = np.concatenate([q, qd])
     comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy,
+                              events=_contact_events(mech, y0, params),
                               reference_key=(id(mech), "lagrange", tuple(part.symbols)))
     comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
     return comparison
+
+
+def _contact_events(mech: Mechanics, y0: np.ndarray, params: np.ndarray) -> list:
+    """Only a scene with unilateral contact watches its constraint force: the comparison ends where
+    the true motion leaves the surface (the model is not valid beyond it)."""
+    if "unilateral_contact" not in mech.system.effects or not mech.multiplier_exprs:
+        return []
+    from lagrade.numerics.model import SceneModel
+
+    return [e for e in SceneModel(mech).events(y0, params) if e.action == "stop"]
 
 
 def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rates) -> Comparison:
