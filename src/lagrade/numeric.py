@@ -69,3 +69,24 @@ def agree(a: np.ndarray, b: np.ndarray, rtol: float = 1e-8) -> np.ndarray:
     both_nan = np.isnan(a) & np.isnan(b)
     with np.errstate(invalid="ignore"):
         return both_nan | (np.abs(a - b) <= tol)
+
+
+def solve_batch(M: np.ndarray, f: np.ndarray) -> np.ndarray:
+    """Solve ``M[:, :, k] x_k = f[:, k]`` for a batch: M (n, n, K), f (n, K) -> x (n, K).
+
+    One singular state gives NaN for that state only, never for the whole batch."""
+    n, K = f.shape
+    with np.errstate(all="ignore"):
+        if n == 1:
+            return f / M[0]
+        stack = M.transpose(2, 0, 1)
+        try:
+            return np.linalg.solve(stack, f.T[..., None])[..., 0].T
+        except np.linalg.LinAlgError:
+            out = np.full((n, K), np.nan)
+            for k in range(K):
+                try:
+                    out[:, k] = np.linalg.solve(stack[k], f[:, k])
+                except np.linalg.LinAlgError:
+                    pass
+            return out

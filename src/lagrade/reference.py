@@ -15,7 +15,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.answers.text import parse_math
-from lagrade.numeric import Vectorized, compile_exprs
+from lagrade.numeric import Vectorized, compile_exprs, solve_batch
 from lagrade.spec import Problem, System
 from lagrade.symbols import T, StateSymbols, to_state
 
@@ -132,22 +132,7 @@ class Mechanics:
         """qdd for a batch of states: shapes (n, K) -> (n, K), by batched LU solves."""
         n, K = q.shape
         both = self._mass_force_f(*q, *qd, t, *params)
-        f = both[n * n:]
-        if n == 1:
-            with np.errstate(all="ignore"):
-                return f / both[0]
-        M = both[:n * n].reshape(n, n, K).transpose(2, 0, 1)
-        with np.errstate(all="ignore"):
-            try:
-                return np.linalg.solve(M, f.T[..., None])[..., 0].T
-            except np.linalg.LinAlgError:  # one singular state must not poison the whole batch
-                out = np.full((n, K), np.nan)
-                for k in range(K):
-                    try:
-                        out[:, k] = np.linalg.solve(M[k], f[:, k])
-                    except np.linalg.LinAlgError:
-                        pass
-                return out
+        return solve_batch(both[:n * n].reshape(n, n, K), both[n * n:])
 
     @cached_property
     def _momentum_f(self) -> Vectorized:
@@ -170,9 +155,7 @@ class Mechanics:
         zero = np.zeros_like(q)
         argv = [*q, *zero, t, *params]
         b = self._momentum_f(*argv)
-        M = self._hessian_f(*argv).reshape(n, n, K).transpose(2, 0, 1)
-        with np.errstate(all="ignore"):
-            return np.linalg.solve(M, (p - b).T[..., None])[..., 0].T
+        return solve_batch(self._hessian_f(*argv).reshape(n, n, K), p - b)
 
     @cached_property
     def _hessian_f(self) -> Vectorized:

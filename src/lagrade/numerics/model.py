@@ -24,22 +24,9 @@ import sympy as sp
 
 from lagrade.compare.trajectory import BatchedEvent
 from lagrade.effects import Machinery, machinery
-from lagrade.numeric import compile_exprs
+from lagrade.numeric import compile_exprs, solve_batch
 from lagrade.reference import Mechanics
 from lagrade.symbols import T
-
-
-def _solve(M: np.ndarray, f: np.ndarray) -> np.ndarray:
-    """Batched M (n, n, K) x = f (n, K)."""
-    n, K = f.shape
-    if n == 1:
-        with np.errstate(all="ignore"):
-            return f / M[0]
-    with np.errstate(all="ignore"):
-        try:
-            return np.linalg.solve(M.transpose(2, 0, 1), f.T[..., None])[..., 0].T
-        except np.linalg.LinAlgError:
-            return np.full((n, K), np.nan)
 
 
 @dataclass
@@ -145,7 +132,7 @@ class SceneModel:
                     M[i, :, k] = 0.0
                     M[i, i, k] = 1.0
                     f[i, k] = 0.0
-        return _solve(M, f)
+        return solve_batch(M, f)
 
     def _stuck(self, sigma: np.ndarray) -> np.ndarray | None:
         """(n, K) mask of coordinates held at rest by sticking dry friction."""
