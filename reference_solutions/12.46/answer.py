@@ -1,5 +1,5 @@
 """Problem 12.46: pendulum from a car on a frictionless rail."""
-from sympy import Function, Matrix, cos, sqrt, symbols, simplify
+from sympy import Function, cos, sin, sqrt, symbols
 
 t = symbols("t")
 m, M, l, g = symbols("m M l g", positive=True)
@@ -9,10 +9,10 @@ p_X, p_theta, th = symbols("p_X p_theta theta")
 
 L = (M + m) / 2 * Xd**2 + m * l * cos(theta) * Xd * thd + m * l**2 / 2 * thd**2 + m * g * l * cos(theta)
 
-# p = A qdot with the mass matrix A; H = p A^-1 p / 2 + V
-A = Matrix([[M + m, m * l * cos(th)], [m * l * cos(th), m * l**2]])
-p = Matrix([p_X, p_theta])
-H = simplify((p.T * A.inv() * p)[0] / 2) - m * g * l * cos(th)
+# p = A qdot with A = [[M + m, m l cos], [m l cos, m l^2]], det A = m l^2 (M + m sin^2);
+# H = p.A^-1.p / 2 + V
+H = (m * l**2 * p_X**2 - 2 * m * l * cos(th) * p_X * p_theta + (M + m) * p_theta**2) / (
+    2 * m * l**2 * (M + m * sin(th)**2)) - m * g * l * cos(th)
 
 cyclic = ["X"]
 conserved = [(M + m) * Xd + m * l * cos(theta) * thd]

@@ -198,6 +198,9 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
         from rich.console import Console  # only for people: --json never pays for it
 
         render(result, Console(highlight=False))
+    from lagrade.grade import keep_references
+
+    keep_references(p)  # after the output: the next check of this problem starts warm
     unusable = loaded.fatal is not None and not loaded.values
     sys.exit(2 if unusable else (0 if result.full_marks else 1))
 
@@ -214,8 +217,9 @@ def _register() -> None:
     """Bulk grading and numerics benchmarks live in their own modules; the group only lists them."""
     from lagrade.cli_bench import bench
     from lagrade.cli_bulk import export, grade, gradescope, report
+    from lagrade.cli_cache import cache
 
-    for command in (grade, export, report, gradescope, bench):
+    for command in (grade, export, report, gradescope, bench, cache):
         main.add_command(command)
 
 

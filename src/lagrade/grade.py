@@ -24,11 +24,22 @@ _REFERENCES: dict[int, ReferenceCache] = {}
 
 
 def references(problem: Problem) -> ReferenceCache:
-    """Reference derivations are made once per problem per process, not once per answer."""
+    """Reference derivations are made once per problem per process, not once per answer, and come
+    from the disk cache when an earlier process made them (:mod:`lagrade.cache`)."""
     key = id(problem)
     if key not in _REFERENCES:
-        _REFERENCES[key] = ReferenceCache(problem)
+        from lagrade import cache
+
+        _REFERENCES[key] = cache.load(problem) or ReferenceCache(problem)
     return _REFERENCES[key]
+
+
+def keep_references(problem: Problem) -> bool:
+    """Save what this process derived for ``problem`` to the disk cache (if anything is new)."""
+    from lagrade import cache
+
+    refs = _REFERENCES.get(id(problem))
+    return refs is not None and cache.save(refs)
 
 
 def _unusable(part, verdict: str, feedback: str) -> PartResult:

@@ -15,7 +15,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.answers.text import parse_math
-from lagrade.numeric import Vectorized, compile_exprs, solve_batch
+from lagrade.numeric import Vectorized, compile_exprs, compile_linear_solve
 from lagrade.spec import Problem, System
 from lagrade.symbols import T, StateSymbols, to_state
 
@@ -45,6 +45,7 @@ class Mechanics:
         self.system = system
         self._parsed: dict[tuple, sp.Expr] = {}
         self._points: dict[tuple, object] = {}
+        self.runs: dict[tuple, tuple] = {}  # reference integrations (lagrade.compare.trajectory)
         self.all_names = tuple(c.name for c in system.coordinates)
         self.names = tuple(c.name for c in system.free_coordinates)
         self.full = StateSymbols(self.all_names)
@@ -97,6 +98,9 @@ class Mechanics:
 
         validate_effects(self)
 
+    def __getstate__(self) -> dict:
+        return {**self.__dict__, "problem": None}  # see ReferenceCache
+
     def _parse(self, text: str, what: str, params: Sequence[str]) -> sp.Expr:
         extra = [c.multiplier for c in self.system.constraints if c.multiplier]
         try:
@@ -124,15 +128,14 @@ class Mechanics:
         return compile_exprs(list(self.mass), self.args)
 
     @cached_property
-    def _mass_force_f(self) -> Vectorized:
-        """M and f in one compiled function: one call per right-hand side, shared subexpressions."""
-        return compile_exprs([*self.mass, *self.force], self.args)
+    def _accelerations_f(self) -> Vectorized:
+        """M qdd = f solved in one compiled call per right-hand side (shared subexpressions)."""
+        n = len(self.s.q)
+        return compile_linear_solve([list(self.mass.row(i)) for i in range(n)], list(self.force), self.args)
 
     def accelerations(self, q: np.ndarray, qd: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
-        """qdd for a batch of states: shapes (n, K) -> (n, K), by batched LU solves."""
-        n, K = q.shape
-        both = self._mass_force_f(*q, *qd, t, *params)
-        return solve_batch(both[:n * n].reshape(n, n, K), both[n * n:])
+        """qdd for a batch of states: shapes (n, K) -> (n, K)."""
+        return self._accelerations_f(*q, *qd, t, *params)
 
     @cached_property
     def _momentum_f(self) -> Vectorized:
@@ -150,16 +153,15 @@ class Mechanics:
         return compile_exprs([sp.diff(self.L, q) + Qi for q, Qi in zip(self.s.q, self.Q)], self.args)
 
     def velocities(self, q: np.ndarray, p: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
-        """Invert p = dL/dqd numerically (L is quadratic in the velocities)."""
-        n, K = q.shape
-        zero = np.zeros_like(q)
-        argv = [*q, *zero, t, *params]
-        b = self._momentum_f(*argv)
-        return solve_batch(self._hessian_f(*argv).reshape(n, n, K), p - b)
+        """Invert p = dL/dqd numerically (L is quadratic in the velocities: p = A qd + b)."""
+        return self._velocities_f(*q, *p, t, *params)
 
     @cached_property
-    def _hessian_f(self) -> Vectorized:
-        return compile_exprs([sp.diff(self.L, a, b) for a in self.s.qd for b in self.s.qd], self.args)
+    def _velocities_f(self) -> Vectorized:
+        zero = {v: 0 for v in self.s.qd}
+        A = [[sp.diff(self.L, a, b).xreplace(zero) for b in self.s.qd] for a in self.s.qd]
+        rhs = [p - sp.diff(self.L, v).xreplace(zero) for p, v in zip(self.s.p, self.s.qd)]
+        return compile_linear_solve(A, rhs, [*self.s.q, *self.s.p, T, *self.params])
 
     def hamiltonian(self, q: np.ndarray, p: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
         """H(q, p, t) = p.qd - L by a numerical Legendre transform: no symbolic inversion needed."""
@@ -193,13 +195,23 @@ class Mechanics:
 
 
 class ReferenceCache:
-    """One `Mechanics` per system of a problem, derived once and reused by every part."""
+    """One `Mechanics` per system of a problem, derived once and reused by every part (and kept on
+    disk between processes by :mod:`lagrade.cache`)."""
 
     def __init__(self, problem: Problem):
         self.problem = problem
-        self._systems: dict[str, Mechanics] = {}
+        self.systems: dict[str, Mechanics] = {}
+        self.saved_size = 0
 
     def __getitem__(self, key: str) -> Mechanics:
-        if key not in self._systems:
-            self._systems[key] = Mechanics(self.problem, self.problem.system(key))
-        return self._systems[key]
+        if key not in self.systems:
+            self.systems[key] = Mechanics(self.problem, self.problem.system(key))
+        return self.systems[key]
+
+    def size(self) -> int:
+        """How much has been derived: grows whenever something new is (the disk cache's dirty check)."""
+        return sum(1 + len(m.__dict__) + len(m._parsed) + len(m._points) + len(m.runs)
+                   for m in self.systems.values())
+
+    def __getstate__(self) -> dict:
+        return {**self.__dict__, "problem": None}  # the loader puts back the problem it loaded

@@ -303,11 +303,13 @@ def _readable_dirs() -> tuple[str, ...]:
 
 
 def _secret_dirs() -> tuple[str, ...]:
-    """Reference solutions and problem files, wherever lagrade is installed: never readable by an answer
-    (a wheel puts them in site-packages, which is otherwise readable)."""
+    """Reference solutions, problem files and the cache of reference derivations, wherever they are:
+    never readable by an answer (a wheel puts them in site-packages, which is otherwise readable)."""
+    from lagrade.cache import cache_dir
     from lagrade.library import problem_dirs, reference_dir
 
-    return tuple(sorted({os.path.realpath(d) for d in (reference_dir(), *problem_dirs())}))
+    cached = [d for d in (cache_dir(),) if d is not None]
+    return tuple(sorted({os.path.realpath(d) for d in (reference_dir(), *problem_dirs(), *cached)}))
 
 
 _SECRET_DIRS = _secret_dirs()

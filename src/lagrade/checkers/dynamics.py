@@ -68,7 +68,7 @@ def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc)
     y0 = np.concatenate([q, qd])
     comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy,
                               events=_contact_events(mech, y0, params),
-                              reference_key=(id(mech), "lagrange", tuple(part.symbols)))
+                              reference_key=("lagrange", tuple(part.symbols)), store=mech.runs)
     comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
     return comparison
 
@@ -98,7 +98,7 @@ def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rate
     labels = [*mech.names, *(f"p_{x}" for x in mech.names)]
     y0 = np.concatenate([q, p])
     comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy,
-                              reference_key=(id(mech), "hamilton", tuple(part.symbols)))
+                              reference_key=("hamilton", tuple(part.symbols)), store=mech.runs)
     comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
     return comparison
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from lagrade.numeric import compile_exprs
+from lagrade.numeric import compile_exprs, compile_linear_solve
 
 
 @dataclass
@@ -48,6 +48,11 @@ class CompiledRows:
         self.G = compile_exprs(list(rows), allargs)
         self.J = compile_exprs([sp.diff(r, u) for r in rows for u in unknowns], allargs)
         self.linear = all(sp.diff(r, u, v) == 0 for r in rows for u in unknowns for v in unknowns)
+        self._direct = None
+        if self.linear and self.m == self.n:
+            zero = {u: 0 for u in unknowns}
+            A = [[sp.diff(r, u) for u in unknowns] for r in rows]
+            self._direct = compile_linear_solve(A, [-r.xreplace(zero) for r in rows], list(args))
 
     def jacobian(self, argv: Sequence[np.ndarray], u: np.ndarray) -> np.ndarray:
         K = np.broadcast(*argv).size
@@ -55,6 +60,8 @@ class CompiledRows:
 
     def solve(self, argv: Sequence[np.ndarray]) -> np.ndarray:
         """The rates these rows define (linear rows: one solve; otherwise two Newton steps)."""
+        if self._direct is not None:
+            return self._direct(*argv)
         K = np.broadcast(*argv).size
         u = np.zeros((self.n, K))
         for _ in range(1 if self.linear else 3):

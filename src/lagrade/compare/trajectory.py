@@ -466,27 +466,24 @@ def _displaced(y0: np.ndarray, seed: int = 12) -> np.ndarray:
     return y0 + 1e-7 * d * (1.0 + np.abs(y0))
 
 
-#: Reference integrations keyed by what determines them (problem, system, route, initial states,
-#: accuracy): every answer to a problem is compared with the same reference motion.
-_REFERENCE_RUNS: dict[object, tuple] = {}
-
-
 def compare_runs(student: Rates, reference: Rates, y0: np.ndarray, labels: list[str], horizon: float,
                  acc: Accuracy, *, chaos: bool | None = None, events: Sequence[BatchedEvent] = (),
-                 reference_key: object = None) -> Comparison:
+                 reference_key: object = None, store: dict | None = None) -> Comparison:
     """Integrate both from ``y0`` and compare; ``labels`` names each state component.
 
     ``chaos``: measure the amplification of small displacements along the reference and compare only
     where it keeps correct integrations within tolerance (None: when the phase space allows chaos).
-    ``reference_key``: when given, the reference integration is made once per key and reused.
+    ``reference_key`` and ``store``: the reference integration is made once per key and kept in
+    ``store`` (the reference system's own, which the disk cache keeps): every answer to a problem is
+    compared with the same reference motion.
     """
-    key = (reference_key, acc, horizon) if reference_key is not None else None
-    if key is not None and key in _REFERENCE_RUNS:
-        ref, method, window, why, amp = _REFERENCE_RUNS[key]
+    key = (reference_key, acc, horizon) if reference_key is not None and store is not None else None
+    if key is not None and key in store:
+        ref, method, window, why, amp = store[key]
     else:
         ref, method, window, why, amp = _reference_run(reference, y0, horizon, acc, chaos, events)
         if key is not None:
-            _REFERENCE_RUNS[key] = (ref, method, window, why, amp)
+            store[key] = (ref, method, window, why, amp)
     return _compare_to_reference(student, ref, y0, labels, horizon, acc, method, window, why, amp, events)
 
 

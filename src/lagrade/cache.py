@@ -1,0 +1,141 @@
+"""Reference derivations kept on disk between runs.
+
+Every check of a problem needs the same reference work: parsing the scene, deriving Lagrange's
+equations, compiling them, sampling states and integrating the reference motions. In one process
+that is done once (:func:`lagrade.grade.references`); this module keeps it across processes, so a
+``lagrade check`` costs little more than importing sympy. ``lagrade cache build`` makes the entries
+ahead of time; a check that derives something new updates its problem's entry.
+
+An entry is a pickle, so it is only ever read from a directory this user owns and nobody else can
+write, and the sandbox never lets an answer file read or write it. Its name hashes everything that
+could change its content: the problem as loaded, lagrade's own source files (size and mtime, so an
+edited checkout never reads a stale entry), and the versions of Python, sympy and numpy. A corrupt,
+foreign or unreadable entry is ignored and rebuilt: the cache can make a check faster, never wrong
+and never fail. ``LAGRADE_CACHE=off`` turns it off; ``LAGRADE_CACHE=DIR`` moves it.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import pickle
+import stat
+import sys
+import tempfile
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+import sympy as sp
+
+import lagrade
+from lagrade.reference import ReferenceCache
+from lagrade.spec import Problem
+
+ENV = "LAGRADE_CACHE"
+_PACKAGE = Path(__file__).resolve().parent
+
+
+def cache_dir() -> Path | None:
+    """Where entries live, or None when caching is off."""
+    setting = os.environ.get(ENV, "")
+    if setting.lower() in ("off", "0", "no", "false"):
+        return None
+    if setting:
+        return Path(setting).expanduser()
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "lagrade"
+
+
+@lru_cache(maxsize=1)
+def code_fingerprint() -> str:
+    """lagrade's version and its source files as installed: an edit invalidates every entry."""
+    h = hashlib.sha256(f"{lagrade.__version__} {sys.version} {sp.__version__} {np.__version__}".encode())
+    for path in sorted(_PACKAGE.rglob("*.py")):
+        st = path.stat()
+        h.update(f"{path.relative_to(_PACKAGE)} {st.st_size} {st.st_mtime_ns}\n".encode())
+    return h.hexdigest()
+
+
+def entry_path(problem: Problem, directory: Path | None = None) -> Path | None:
+    directory = directory or cache_dir()
+    if directory is None:
+        return None
+    h = hashlib.sha256(code_fingerprint().encode())
+    h.update(problem.model_dump_json().encode())
+    safe = "".join(c if c.isalnum() or c in ".-_" else "_" for c in problem.id)
+    return directory / f"{safe}-{h.hexdigest()[:20]}.pkl"
+
+
+def _private(path: Path) -> bool:
+    """Owned by this user and writable by nobody else."""
+    try:
+        st = path.stat()
+    except OSError:
+        return False
+    return st.st_uid == os.getuid() and not st.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+
+
+def _trusted(path: Path) -> bool:
+    """An entry only this user could have written: the file and its directory are private."""
+    return _private(path.parent) and _private(path)
+
+
+def load(problem: Problem) -> ReferenceCache | None:
+    """The problem's derivations from disk, or None (no entry, stale, foreign or unreadable)."""
+    path = entry_path(problem)
+    if path is None or not path.is_file() or not _trusted(path):
+        return None
+    try:
+        with open(path, "rb") as fh:
+            refs = pickle.load(fh)  # noqa: S301  (written by lagrade into a directory only this user can write)
+    except Exception:  # noqa: BLE001  (a truncated or incompatible entry is rebuilt, never fatal)
+        return None
+    if not isinstance(refs, ReferenceCache):
+        return None
+    refs.problem = problem
+    for mech in refs.systems.values():
+        mech.problem = problem
+    refs.saved_size = refs.size()
+    return refs
+
+
+def save(refs: ReferenceCache) -> bool:
+    """Write the entry if this process derived something it did not hold; atomic, best effort."""
+    if refs.size() <= refs.saved_size:
+        return False
+    path = entry_path(refs.problem)
+    if path is None:
+        return False
+    try:
+        path.parent.mkdir(mode=0o700, parents=True, exist_ok=True)
+        if not _private(path.parent):
+            return False
+        data = pickle.dumps(refs, protocol=pickle.HIGHEST_PROTOCOL)
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-", suffix=".pkl")
+        try:
+            with os.fdopen(fd, "wb") as fh:
+                fh.write(data)
+            os.replace(tmp, path)
+        except BaseException:
+            os.unlink(tmp)
+            raise
+    except Exception:  # noqa: BLE001  (a read-only home or a full disk must not fail a check)
+        return False
+    refs.saved_size = refs.size()
+    return True
+
+
+def entries(directory: Path | None = None) -> list[Path]:
+    directory = directory or cache_dir()
+    if directory is None or not directory.is_dir():
+        return []
+    return sorted(directory.glob("*.pkl"))
+
+
+def clear(directory: Path | None = None) -> int:
+    removed = 0
+    for path in entries(directory):
+        path.unlink(missing_ok=True)
+        removed += 1
+    return removed

@@ -1,0 +1,336 @@
+"""Tests of the batched pure-numpy DOP853 integrator (lagrade.compare.dop853).
+
+scipy is used here only as a reference; the module itself must not import it.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.integrate import solve_ivp
+
+from lagrade.compare.dop853 import Event, RKResult, dop853
+
+
+def oscillators(w: np.ndarray):
+    """x'' = -w^2 x per column, state [x, v]."""
+    w2 = np.asarray(w, dtype=float) ** 2
+
+    def fun(t: float, Y: np.ndarray) -> np.ndarray:
+        return np.stack([Y[1], -w2 * Y[0]])
+
+    return fun
+
+
+def oscillator_exact(w, x0, v0, t) -> np.ndarray:
+    """(2, K, nt) exact states of `oscillators`."""
+    w, x0, v0 = (np.asarray(a, dtype=float)[:, None] for a in (w, x0, v0))
+    t = np.asarray(t, dtype=float)[None, :]
+    x = x0 * np.cos(w * t) + v0 / w * np.sin(w * t)
+    v = -x0 * w * np.sin(w * t) + v0 * np.cos(w * t)
+    return np.stack([x, v])
+
+
+def pendulums(k: np.ndarray):
+    """theta'' = -(g/l) sin(theta) per column, state [theta, omega]."""
+    k = np.asarray(k, dtype=float)
+
+    def fun(t: float, Y: np.ndarray) -> np.ndarray:
+        return np.stack([Y[1], -k * np.sin(Y[0])])
+
+    return fun
+
+
+# ----------------------------------------------------------------------------- 1. accuracy
+
+
+def test_harmonic_oscillator_batch_matches_exact_solution():
+    w = np.array([0.5, 1.0, 1.7, 2.3, 3.0])
+    x0 = np.array([1.0, 2.0, 0.5, 3.0, 1.5])
+    v0 = np.array([0.0, 0.3, -1.0, 0.5, 2.0])
+    t_eval = np.linspace(0.0, 10.0, 41)  # includes t0 and t_end
+    r = dop853(oscillators(w), 0.0, np.vstack([x0, v0]), 10.0, rtol=1e-11, atol=1e-11, t_eval=t_eval)
+    assert isinstance(r, RKResult)
+    assert r.status == 0 and r.t_event is None
+    assert r.y.shape == (2, 5, 41)
+    np.testing.assert_array_equal(r.t, t_eval)
+    np.testing.assert_array_equal(r.y[:, :, 0], np.vstack([x0, v0]))
+    assert np.abs(r.y - oscillator_exact(w, x0, v0, t_eval)).max() < 1e-9
+
+
+def test_many_columns_use_the_reduction_path():
+    # n * K > 4096: the per-column sums use a reduction instead of the 0/1 matrix
+    K = 64
+    w = np.linspace(0.5, 3.0, K)
+    x0, v0 = np.linspace(-2.0, 2.0, K), np.linspace(1.0, -1.0, K)
+    t_eval = np.linspace(0.0, 5.0, 11)
+    r = dop853(oscillators(w), 0.0, np.vstack([x0, v0]), 5.0, rtol=1e-11, atol=1e-11, t_eval=t_eval)
+    assert r.status == 0
+    assert np.abs(r.y - oscillator_exact(w, x0, v0, t_eval)).max() < 1e-9
+
+
+# ----------------------------------------------------------------------------- 2. against scipy
+
+K_PEND = np.array([0.5, 1.0, 1.5, 2.0, 4.0, 9.81, 3.0, 0.8])
+Y0_PEND = np.vstack([[0.1, 0.5, 1.0, 1.5, 2.0, 2.5, 2.2, 0.3],
+                     [0.0, 0.2, -0.3, 0.5, 0.0, -1.0, 0.1, 1.0]])
+
+
+def _scipy_column(c: int, t_end: float, t_eval: np.ndarray | None):
+    k = K_PEND[c]
+    return solve_ivp(lambda t, y: [y[1], -k * np.sin(y[0])], (0.0, t_end), Y0_PEND[:, c], method="DOP853",
+                     rtol=1e-10, atol=1e-10, t_eval=t_eval)
+
+
+def test_pendulum_batch_matches_scipy_per_column_and_costs_about_the_hardest_column():
+    t_end = 10.0
+    t_eval = np.linspace(0.0, t_end, 101)
+    r = dop853(pendulums(K_PEND), 0.0, Y0_PEND, t_end, rtol=1e-10, atol=1e-10, t_eval=t_eval)
+    assert r.status == 0
+    sols = [_scipy_column(c, t_end, t_eval) for c in range(8)]
+    for c, s in enumerate(sols):
+        assert s.status == 0
+        assert np.abs(s.y - r.y[:, c]).max() < 1e-7, c
+    # Like with like, with dense output: both runs produce the same t_eval samples, and both nfev
+    # count the 3 extra dense-output evaluations of each step holding samples.
+    assert r.nfev <= 1.3 * max(s.nfev for s in sols)
+    # Like with like, stepping only: scipy without t_eval (no dense output), ours with samples only
+    # at t0 and t_end (which need no interpolation, hence no dense output either).
+    r_steps = dop853(pendulums(K_PEND), 0.0, Y0_PEND, t_end, rtol=1e-10, atol=1e-10,
+                     t_eval=np.array([0.0, t_end]))
+    steps_only = [_scipy_column(c, t_end, None).nfev for c in range(8)]
+    assert r_steps.nfev <= 1.3 * max(steps_only)
+    np.testing.assert_allclose(r_steps.y[:, :, -1], r.y[:, :, -1], rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("c", [0, 5])
+def test_single_column_takes_exactly_scipys_steps(c):
+    # K = 1: the initial step, the error norm and the step-size control are scipy's DOP853
+    t_end = 10.0
+    r = dop853(pendulums(K_PEND[c:c + 1]), 0.0, Y0_PEND[:, c:c + 1], t_end, rtol=1e-10, atol=1e-10,
+               t_eval=np.array([t_end]))
+    s = _scipy_column(c, t_end, None)
+    assert r.nfev == s.nfev
+    np.testing.assert_allclose(r.y[:, 0, -1], s.y[:, -1], rtol=0, atol=1e-13)
+
+
+# ----------------------------------------------------------------------------- 3. per-column control
+
+
+def test_each_column_is_held_to_its_own_tolerance():
+    # 31 easy oscillators and one fast one. A norm over the flattened batch would let the easy
+    # columns dilute the fast column's error (about sqrt(32)-fold larger steps^8); the per-column
+    # max norm gives every column at most the error it gets when integrated alone.
+    K = 32
+    w = np.ones(K)
+    w[-1] = 20.0
+    x0 = np.linspace(0.5, 2.0, K)
+    v0 = np.zeros(K)
+    t_eval = np.linspace(0.0, 10.0, 11)
+    tol = 1e-8
+
+    def error(cols: slice) -> np.ndarray:
+        r = dop853(oscillators(w[cols]), 0.0, np.vstack([x0[cols], v0[cols]]), 10.0, rtol=tol, atol=tol,
+                   t_eval=t_eval)
+        assert r.status == 0
+        return np.abs(r.y - oscillator_exact(w[cols], x0[cols], v0[cols], t_eval)).max(axis=(0, 2))
+
+    batch = error(slice(None))
+    for c in (0, 13, K - 2, K - 1):
+        alone = error(slice(c, c + 1))[0]
+        assert batch[c] <= 1.2 * alone + 1e-13, (c, batch[c], alone)
+    assert batch[-1] > 1e-7  # the fast column's error is well above round-off: the check has teeth
+
+
+# ----------------------------------------------------------------------------- 4. events
+
+
+W_EV = np.array([1.0, 2.0, 3.0, 1.5])
+
+
+def _cos_batch(w=W_EV):
+    """x = cos(w t): falling zero at pi/(2w), rising zero at 3pi/(2w)."""
+    return oscillators(w), np.vstack([np.ones(len(w)), np.zeros(len(w))])
+
+
+def _x(t: float, Y: np.ndarray) -> np.ndarray:
+    return Y[0]
+
+
+def test_falling_event_is_located_on_the_dense_output():
+    fun, y0 = _cos_batch()
+    t_eval = np.linspace(0.0, 2.0, 21)
+    r = dop853(fun, 0.0, y0, 2.0, rtol=1e-12, atol=1e-12, t_eval=t_eval, events=[Event(_x, direction=-1)])
+    assert r.status == 1
+    assert r.event_index == 0 and r.event_column == 2  # w = 3 crosses first
+    assert abs(r.t_event - np.pi / 6) < 1e-10
+    # y_event: the state of ALL columns at t_event
+    assert r.y_event.shape == (2, 4)
+    exact = oscillator_exact(W_EV, np.ones(4), np.zeros(4), [r.t_event])[:, :, 0]
+    np.testing.assert_allclose(r.y_event, exact, rtol=0, atol=1e-10)
+    # samples after the event are not returned; those before are
+    assert r.t.max() <= r.t_event
+    np.testing.assert_array_equal(r.t, t_eval[t_eval <= r.t_event])
+    assert r.y.shape == (2, 4, len(r.t))
+    np.testing.assert_allclose(r.y, oscillator_exact(W_EV, np.ones(4), np.zeros(4), r.t), rtol=0, atol=1e-10)
+
+
+def test_rising_direction_ignores_falling_crossings():
+    fun, y0 = _cos_batch()
+    r = dop853(fun, 0.0, y0, 5.0, rtol=1e-12, atol=1e-12, t_eval=np.array([]), events=[Event(_x, direction=+1)])
+    assert r.status == 1 and r.event_column == 2
+    assert abs(r.t_event - 3 * np.pi / 6) < 1e-10
+
+
+def test_both_directions_fire_at_the_first_crossing():
+    fun, y0 = _cos_batch()
+    r = dop853(fun, 0.0, y0, 5.0, rtol=1e-12, atol=1e-12, t_eval=np.array([]), events=[Event(_x)])
+    assert r.status == 1 and r.event_column == 2
+    assert abs(r.t_event - np.pi / 6) < 1e-10
+
+
+def test_columns_mask_excludes_a_column():
+    fun, y0 = _cos_batch()
+    mask = np.array([True, True, False, True])  # the fastest column (w = 3) is not watched
+    r = dop853(fun, 0.0, y0, 5.0, rtol=1e-12, atol=1e-12, t_eval=np.array([]),
+               events=[Event(_x, direction=-1, columns=mask)])
+    assert r.status == 1 and r.event_column == 1  # next fastest: w = 2
+    assert abs(r.t_event - np.pi / 4) < 1e-10
+
+
+def test_earliest_event_over_events_and_columns_wins():
+    fun, y0 = _cos_batch()
+    # event 0: x = 0.5 (w = 3 reaches it at pi/9); event 1: x = -0.9 on column 0 only (late)
+    events = [Event(lambda t, Y: Y[0] + 0.9, columns=np.array([True, False, False, False])),
+              Event(lambda t, Y: Y[0] - 0.5, direction=-1)]
+    r = dop853(fun, 0.0, y0, 5.0, rtol=1e-12, atol=1e-12, t_eval=np.linspace(0, 5, 11), events=events)
+    assert r.status == 1
+    assert (r.event_index, r.event_column) == (1, 2)
+    assert abs(r.t_event - np.pi / 9) < 1e-10
+    # the same with the events in the other order, and the late one on every column
+    events2 = [events[1], Event(lambda t, Y: Y[0] + 0.9)]
+    r2 = dop853(fun, 0.0, y0, 5.0, rtol=1e-12, atol=1e-12, t_eval=np.array([]), events=events2)
+    assert (r2.event_index, r2.event_column) == (0, 2)
+    assert abs(r2.t_event - np.pi / 9) < 1e-10
+    # two crossings in one long step: a later event found first must not hide an earlier one
+    late_first = [Event(lambda t, Y: Y[0] + 0.5), Event(lambda t, Y: Y[0] - 0.5)]
+    r3 = dop853(fun, 0.0, y0, 5.0, rtol=1e-6, atol=1e-6, t_eval=np.array([]), events=late_first)
+    assert (r3.event_index, r3.event_column) == (1, 2)
+    assert abs(r3.t_event - np.pi / 9) < 1e-5
+
+
+def test_event_zero_at_t0_does_not_fire_at_t0():
+    fun, y0 = _cos_batch()
+    # v = -w sin(w t) is exactly 0 at t0; its next zero is at pi/w (w = 3 first)
+    r = dop853(fun, 0.0, y0, 5.0, rtol=1e-12, atol=1e-12, t_eval=np.array([0.0]),
+               events=[Event(lambda t, Y: Y[1])])
+    assert r.status == 1 and r.event_column == 2
+    assert abs(r.t_event - np.pi / 3) < 1e-10
+    np.testing.assert_array_equal(r.t, [0.0])
+    # x = sin(w t): exactly 0 at t0, rising; the falling zero at pi/w fires, not t0
+    w = np.array([2.0, 1.0])
+    r2 = dop853(oscillators(w), 0.0, np.vstack([np.zeros(2), w]), 5.0, rtol=1e-12, atol=1e-12,
+                t_eval=np.array([]), events=[Event(_x, direction=-1)])
+    assert r2.status == 1 and r2.event_column == 0
+    assert abs(r2.t_event - np.pi / 2) < 1e-10
+    # and with direction +1 the next rising zero is at 2 pi / w
+    r3 = dop853(oscillators(w), 0.0, np.vstack([np.zeros(2), w]), 5.0, rtol=1e-12, atol=1e-12,
+                t_eval=np.array([]), events=[Event(_x, direction=+1)])
+    assert r3.status == 1 and r3.event_column == 0
+    assert abs(r3.t_event - np.pi) < 1e-10
+
+
+def test_no_crossing_reaches_the_end():
+    fun, y0 = _cos_batch()
+    r = dop853(fun, 0.0, y0, 0.4, rtol=1e-10, atol=1e-10, t_eval=np.array([0.0, 0.4]),
+               events=[Event(_x, direction=-1)])
+    assert r.status == 0 and r.t_event is None and len(r.t) == 2
+
+
+# ----------------------------------------------------------------------------- 5. failures
+
+
+class Singular(Exception):
+    pass
+
+
+def test_exception_from_fun_propagates_unchanged():
+    w2 = W_EV ** 2
+
+    def fun(t, Y):
+        if t > 1.0:
+            raise Singular(t)
+        return np.stack([Y[1], -w2 * Y[0]])
+
+    with pytest.raises(Singular) as info:
+        dop853(fun, 0.0, np.ones((2, 4)), 3.0, rtol=1e-9, atol=1e-9, t_eval=np.array([3.0]))
+    assert info.value.args[0] > 1.0
+
+
+def test_nan_from_fun_fails_instead_of_looping():
+    w2 = W_EV ** 2
+
+    def fun(t, Y):
+        out = np.stack([Y[1], -w2 * Y[0]])
+        if t > 1.0:
+            out[1, 2] = np.nan
+        return out
+
+    t_eval = np.linspace(0.0, 3.0, 7)
+    r = dop853(fun, 0.0, np.ones((2, 4)), 3.0, rtol=1e-9, atol=1e-9, t_eval=t_eval)
+    assert r.status == -1
+    assert "step size too small" in r.message
+    assert r.nfev < 5000
+    # the samples before the failure (steps get ever closer to t = 1 from below) are returned
+    np.testing.assert_array_equal(r.t, t_eval[t_eval < 1.0])
+    assert np.all(np.isfinite(r.y))
+
+
+def test_max_evals_stops_with_a_message():
+    fun, y0 = _cos_batch()
+    r = dop853(fun, 0.0, y0, 100.0, rtol=1e-10, atol=1e-10, t_eval=np.linspace(0, 100, 11), max_evals=200)
+    assert r.status == -1
+    assert "more than 200 evaluations" in r.message
+    assert r.nfev <= 200
+    # enough evaluations: no failure
+    ok = dop853(fun, 0.0, y0, 1.0, rtol=1e-10, atol=1e-10, t_eval=np.array([1.0]), max_evals=10_000)
+    assert ok.status == 0 and ok.nfev <= 10_000
+
+
+def test_the_module_does_not_import_scipy():
+    code = ("import sys; import lagrade.compare.dop853; "
+            "bad = [m for m in sys.modules if m == 'scipy' or m.startswith('scipy.')]; "
+            "assert not bad, bad")
+    subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_empty_interval_and_bad_t_eval():
+    y0 = np.ones((2, 3))
+    r = dop853(oscillators(np.ones(3)), 1.0, y0, 1.0, rtol=1e-8, atol=1e-8, t_eval=np.array([1.0]))
+    assert r.status == 0 and r.nfev == 0
+    np.testing.assert_array_equal(r.y[:, :, 0], y0)
+    with pytest.raises(ValueError):
+        dop853(oscillators(np.ones(3)), 0.0, y0, 1.0, rtol=1e-8, atol=1e-8, t_eval=np.array([0.5, 0.2]))
+
+
+# ----------------------------------------------------------------------------- 6. property
+
+
+@settings(max_examples=40, deadline=None)
+@given(a=st.lists(st.floats(-2.0, 1.0), min_size=1, max_size=8),
+       scale=st.floats(0.1, 10.0),
+       t_end=st.floats(0.1, 3.0))
+def test_linear_systems_match_exponential(a, scale, t_end):
+    a = np.array(a)
+    K = len(a)
+    y0 = scale * np.vstack([np.linspace(1.0, 2.0, K), -np.linspace(0.5, 1.5, K)])
+    t_eval = np.linspace(0.0, t_end, 7)
+    r = dop853(lambda t, Y: a * Y, 0.0, y0, t_end, rtol=1e-11, atol=1e-11, t_eval=t_eval)
+    assert r.status == 0
+    exact = y0[:, :, None] * np.exp(a[None, :, None] * t_eval[None, None, :])
+    assert np.all(np.abs(r.y - exact) <= 1e-8 * np.abs(exact))
