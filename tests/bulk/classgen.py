@@ -34,6 +34,8 @@ EQUIVALENT = {
              "a = {k: together(v) for k, v in a.items()}\n",
     "ex12.3": "from sympy import expand, cancel\nL = expand(L)\neom = list(reversed(eom))\n"
               "a = {k: cancel(v) for k, v in a.items()}\n",
+    "12.14": "from sympy import expand\nL = expand(L) + 3*m2*g*l1\neom_exact = [Eq(e.lhs - e.rhs, 0) for e in eom_exact][::-1]\n"
+             "omega = omega[::-1]\n",
 }
 
 #: appended to a reference solution: wrong by a documented rule -> (code, {part: fraction})
@@ -42,6 +44,7 @@ SCALED = {
     "12.3": ("L = 3*L\n", {"L": 0.5}),            # c*L, c != 1: half the credit
     "12.22": ("L = 3*L\n", {"L": 0.5}),
     "ex12.3": ("L = 3*L\n", {"L": 0.5}),
+    "12.14": ("L = 3*L\n", {"L": 0.5}),
 }
 
 BROKEN = {

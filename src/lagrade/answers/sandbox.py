@@ -129,6 +129,12 @@ def _prepare_parent() -> None:
     import sympy.parsing.sympy_parser  # noqa: F401  (patched in the child so strings are not parsed)
     import traceback  # noqa: F401
 
+    # sympy imports these the first time an Add or Mul of a certain shape is built: about 50 ms that
+    # a child would pay on every answer (its imports die with it), and the parent again on rebuild
+    import sympy.assumptions.wrapper  # noqa: F401
+    import sympy.sets.setexpr  # noqa: F401
+    import sympy.tensor.tensor  # noqa: F401
+
     _prepared = True
 
 
@@ -209,7 +215,7 @@ def _reap(pid: int, kill: bool, deadline: float) -> tuple[int, float]:
             _kill_group(pid)
             _, status, usage = os.wait4(pid, 0)
             return status, usage.ru_utime + usage.ru_stime
-        time.sleep(0.01)
+        time.sleep(0.001)  # the child closed its pipes and is exiting: usually a millisecond away
 
 
 def _kill_group(pid: int) -> None:

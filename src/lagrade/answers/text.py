@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import ast
 import difflib
+from functools import lru_cache
 import re
 import tomllib
 from collections.abc import Iterable, Sequence
@@ -73,16 +74,24 @@ def parse_math(text: str, coordinates: Sequence[str], known_names: Iterable[str]
         raise TextAnswerError(f"cannot interpret the answer: {str(exc)[:200]}") from None
 
 
+@lru_cache(maxsize=256)
+def _coordinate(name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    """q(t), q'(t), q''(t): built once per name (sympy's diff costs about half a millisecond)."""
+    q = sp.Function(name)(T)
+    return q, q.diff(T), q.diff(T, 2)
+
+
 class _Reader:
     def __init__(self, coordinates: Sequence[str], known_names: Iterable[str] | None) -> None:
-        self.coords = {check_name(c, "coordinate name"): sp.Function(c)(T) for c in coordinates}
+        self.coords = {check_name(c, "coordinate name"): _coordinate(c)[0] for c in coordinates}
         self.known = None if known_names is None else set(known_names)
         self.shorthand: dict[str, sp.Expr] = {}
-        for name, q in self.coords.items():
+        for name in self.coords:
+            _, velocity, acceleration = _coordinate(name)
             for suffix in _FIRST:
-                self.shorthand[name + suffix] = q.diff(T)
+                self.shorthand[name + suffix] = velocity
             for suffix in _SECOND:
-                self.shorthand[name + suffix] = q.diff(T, 2)
+                self.shorthand[name + suffix] = acceleration
 
     # containers and equations ------------------------------------------------------
     def top(self, node: ast.AST) -> Any:

@@ -53,8 +53,14 @@ class Grader:
             for system in problem.systems:
                 refs[system.key]
             self.problems[pid] = problem
+            _warm_up(problem)
+
 
     def close(self) -> None:
+        from lagrade.grade import keep_references
+
+        for problem in self.problems.values():
+            keep_references(problem)  # the next run (or `lagrade check`) starts warm
         shutil.rmtree(self.dir, ignore_errors=True)
 
     def grade(self, job: dict[str, Any]) -> dict[str, Any]:
@@ -76,7 +82,8 @@ class Grader:
                                                                wall_seconds=limits["wall_seconds"],
                                                                memory_mb=limits["memory_mb"]))
             result = grade_values(problem, loaded, job["accuracy"],
-                                  credit=Credit.model_validate(job["credit"]) if job.get("credit") else None)
+                                  credit=Credit.model_validate(job["credit"]) if job.get("credit") else None,
+                                  read_as=())  # the gradebook keeps its own text and MathML (_show)
             parts = []
             for p in result.parts:
                 row = p.model_dump(exclude={"read_as"})
@@ -100,6 +107,27 @@ class Grader:
             "reason": reason, "score": result.score, "max_score": result.max_score,
             "problems": result.problems, "parts": parts, "seconds": time.monotonic() - start,
         }
+
+
+def _warm_up(problem) -> None:
+    """Grade the problem's reference solution (trusted: it ships with lagrade) once before the class.
+
+    Running it in this process too fills sympy's caches with the expressions a correct answer
+    builds; every sandbox child is forked from here, so a student's answer then costs a few
+    milliseconds to run instead of 40 (sympy otherwise re-derives the assumptions of each new
+    expression in every child). Grading it compiles and integrates what the answers will share."""
+    from lagrade.answers.load import load_answer
+    from lagrade.grade import grade_values
+    from lagrade.library import reference_dir
+
+    answer = reference_dir() / problem.id / "answer.py"
+    if not answer.is_file():
+        return
+    try:
+        exec(compile(answer.read_text(encoding="utf-8"), str(answer), "exec"), {"__name__": "__reference__"})  # noqa: S102
+        grade_values(problem, load_answer(answer, problem), read_as=())
+    except Exception:  # noqa: BLE001  (a warm-up that fails only costs speed)
+        pass
 
 
 def _on_sigprof(signum, frame) -> None:  # noqa: ARG001

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 from bisect import bisect_right
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
 import numpy as np
@@ -230,10 +230,11 @@ MIN_FACTOR = 0.2   # smallest step decrease
 MAX_FACTOR = 10.0  # largest step increase
 ERROR_EXPONENT = -1.0 / 8.0  # -1 / (error estimator order 7 + 1)
 EPS = float(np.finfo(float).eps)
-_TINY = float(np.finfo(float).tiny)
 #: where a column's event function is exactly 0 at the start of a step, its sign just after is read
-#: this fraction of the step later (so a zero at t0, or a touch at a step boundary, is not a root).
+#: this fraction of the step later: leaving zero in the watched direction is a root at the start.
 _ZERO_START_OFFSET = 1e-6
+#: crossings this close (relative to max(1, |t|)) to the earliest one are reported with it
+SIMULTANEOUS = 1e-10
 
 _C = [float(c) for c in C]
 
@@ -272,6 +273,9 @@ def _dense_matrix() -> np.ndarray:
 
 
 _W = _dense_matrix()
+#: np.dot without the __array_function__ dispatch (a third of its cost on small arrays); only ndarrays
+#: reach it here.
+_dot = getattr(np.dot, "__wrapped__", np.dot)
 _POWERS = np.arange(1.0, INTERPOLATOR_POWER + 1.0)
 
 
@@ -304,6 +308,9 @@ class RKResult:
     event_index: int | None = None   # which entry of `events`
     event_column: int | None = None  # which trajectory (column)
     y_event: np.ndarray | None = None  # (dim, K) state of ALL columns at t_event
+    #: other (event, column) pairs whose crossing lies within SIMULTANEOUS of t_event: trajectories
+    #: with the same period cross together, and a restart exactly at such a root cannot see it
+    also: list[tuple[int, int]] = field(default_factory=list)
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -369,24 +376,28 @@ def _initial_step(fun, t0: float, y0: np.ndarray, f0: np.ndarray, t_end: float, 
     """scipy's ``select_initial_step`` (Hairer II.4) per column; the batch takes the smallest.
 
     The probe step h0 is shared (the smallest per-column h0), so one extra call of fun serves all
-    columns; for K = 1 this is exactly scipy's choice.  Returns (step, calls of fun).
+    columns.  Columns at rest (zero rates at t0 and at the probe) set no scale of their own, so
+    they are left out of both minima unless every column is at rest: otherwise one trajectory
+    sitting at an equilibrium would start the whole batch at scipy's blind 1e-4 guess.  For K = 1
+    this is exactly scipy's choice.  Returns (step, calls of fun).
     """
     interval = t_end - t0
     scale = atol + np.abs(y0) * rtol
     d0 = _col_rms(y0 / scale, dim, K)
     d1 = _col_rms(f0 / scale, dim, K)
     h0_col = np.where((d0 < 1e-5) | (d1 < 1e-5), 1e-6, 0.01 * d0 / np.where(d1 > 0, d1, 1.0))
-    h0 = min(float(np.min(h0_col)), interval)
+    moving = d1 > 1e-15
+    h0 = min(float(np.min(h0_col[moving] if moving.any() else h0_col)), interval)
     y1 = y0 + h0 * f0
     f1 = np.asarray(fun(t0 + h0, y1.reshape(dim, K)), dtype=float).reshape(-1)
     d2 = _col_rms((f1 - f0) / scale, dim, K) / h0
-    dmax = np.maximum(d1, d2)
     flat = (d1 <= 1e-15) & (d2 <= 1e-15)
-    h1 = np.where(flat, max(1e-6, h0 * 1e-3), (0.01 / np.where(flat, 1.0, dmax)) ** (1.0 / 8.0))
-    h1_min = float(np.min(h1))
-    if not math.isfinite(h1_min):  # the probe met NaN/inf: let the step control shrink the step
-        h1_min = math.inf
-    h = min(100.0 * h0, h1_min, interval)
+    h1 = np.where(flat, max(1e-6, h0 * 1e-3), (0.01 / np.where(flat, 1.0, np.maximum(d1, d2))) ** (1.0 / 8.0))
+    h_col = np.minimum(100.0 * h0, h1)
+    h = float(np.min(h_col[~flat] if not flat.all() else h_col))
+    if not math.isfinite(h):  # the probe met NaN/inf: let the step control shrink the step
+        h = 100.0 * h0
+    h = min(h, interval)
     if not h > 0.0:
         h = min(1e-6, interval)
     return h, 1
@@ -490,10 +501,10 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
         if nfev + 3 > limit:
             raise _Budget
         for row, zs, dst, c in dense_plan:
-            np.dot(row, zs, out=ystage)
+            _dot(row, zs, out=ystage)
             dst[...] = fun(t + c * h, ystage2)
         nfev += 3
-        np.dot(_W, Kext, out=P)
+        _dot(_W, Kext, out=P)
         np.multiply(P, h, out=P)
 
     def interp(tt: float) -> np.ndarray:
@@ -526,7 +537,7 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
 
         # local bindings: this loop is where the time goes
         dot, multiply, divide, square, maximum, absolute, add = (
-            np.dot, np.multiply, np.divide, np.square, np.maximum, np.absolute, np.add)
+            _dot, np.multiply, np.divide, np.square, np.maximum, np.absolute, np.add)
         add_reduce = np.add.reduce
         max_reduce = np.maximum.reduce
         ulp, sqrt, isfinite = math.ulp, math.sqrt, math.isfinite
@@ -593,6 +604,7 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
             dense = False
             t_stop = t_new
             hit: tuple[int, int] | None = None
+            also: list[tuple[int, int]] = []
             try:
                 if n_events:
                     # (event, column, g at the bracket start, bracket start) with a watched crossing
@@ -614,8 +626,11 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
                             if gl == 0.0:
                                 if gr == 0.0:
                                     continue  # zero at both ends: not a crossing
-                                # zero at the step start (t0, or a touch at the last step end): a
-                                # crossing only if the sign just after the start differs from gr
+                                # zero at the step start (t0, or a touch at the last step end):
+                                # leaving zero in the watched direction is a root right there, as in
+                                # solve_ivp (a friction force whose sign is undecided at rest picks
+                                # its branch at once); leaving it the other way, a later crossing
+                                # in the step still counts
                                 if not dense:
                                     make_dense()
                                     dense = True
@@ -624,6 +639,9 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
                                     g_zero = np.array(ev_fns[i](tl, interp(tl)), dtype=float).reshape(-1)
                                 gl = float(g_zero[c])
                                 if gl == 0.0:
+                                    continue
+                                if _crosses(0.0, gl, direction):
+                                    cands.append((i, c, 0.0, t))
                                     continue
                             if _crosses(gl, gr, direction):
                                 cands.append((i, c, gl, tl))
@@ -658,6 +676,15 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
                                 hit = (i, c)
                         if hit is not None:
                             t_stop = best_t
+                            t_near = min(t_new, best_t + SIMULTANEOUS * max(1.0, abs(best_t)))
+                            g_near: dict[int, np.ndarray] = {}
+                            for i, c, gl, tl in cands:
+                                if (i, c) == hit or tl > t_near:
+                                    continue
+                                if i not in g_near:
+                                    g_near[i] = np.array(ev_fns[i](t_near, interp(t_near)), dtype=float).reshape(-1)
+                                if _crosses(gl, float(g_near[i][c]), ev_dir[i]):
+                                    also.append((i, c))
 
                 # ---- output samples in (t, t_stop]
                 j = bisect_right(te_list, t_stop, i_eval)
@@ -688,7 +715,7 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
                     y_ev = ynew2.copy() if t_stop == t_new else interp(t_stop)
                     return result(1, f"event {hit[0]} of trajectory {hit[1]} at t = {t_stop:.17g}", i_eval,
                                   t_event=float(t_stop), event_index=hit[0], event_column=hit[1],
-                                  y_event=y_ev)
+                                  y_event=y_ev, also=also)
             except _Budget:
                 return result(-1, budget_message.format(t), i_eval)
 

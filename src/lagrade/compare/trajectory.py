@@ -38,7 +38,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.integrate import solve_ivp
+
+from lagrade.compare.dop853 import Event, dop853
 
 Rates = Callable[[float, np.ndarray], np.ndarray]  # (t, y of shape (dim, K)) -> (dim, K)
 
@@ -310,6 +311,42 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
                 out.append(g)
         return out
 
+    def batched_events() -> list[tuple[BatchedEvent, Event]]:
+        out = []
+        for ev in events:
+            act = alive & (ev.active() if ev.active is not None else True)
+            if act.any():
+                out.append((ev, Event(ev.fn, ev.direction, act)))
+        return out
+
+    def segment(t0: float, y: np.ndarray, times: np.ndarray):
+        """One stretch up to the horizon or the first event: (t, y (dim*K, nt), hit), where hit is None
+        or (t, y, [(event, trajectory), ...]) for the first crossing and any simultaneous ones."""
+        if method == "DOP853":  # batched, per-trajectory error control, no scipy import (compare/dop853.py)
+            evs = batched_events()
+            res = dop853(lambda t, Y: fun(t, Y.reshape(-1)).reshape(dim, K), t0, y.reshape(dim, K), horizon,
+                         rtol=acc.rtol, atol=acc.atol, t_eval=times, events=[e for _, e in evs])
+            if res.status == -1:
+                raise _Failed(res.message, res.t[-1] if res.t.size else t0)
+            hit = None
+            if res.status == 1:
+                fired = [(evs[i][0], c) for i, c in [(res.event_index, res.event_column), *res.also]]
+                hit = (res.t_event, res.y_event.reshape(-1), fired)
+            return res.t, res.y.reshape(dim * K, -1), hit
+        from scipy.integrate import solve_ivp  # implicit methods for stiff scenes only: 0.2 s to import
+
+        evs = scalar_events()
+        sol = solve_ivp(fun, (t0, horizon), y, method=method, t_eval=times, rtol=acc.rtol,
+                        atol=acc.atol, events=evs or None, **({"jac": jac_fn} if jac_fn else {}))
+        if sol.status == -1:
+            raise _Failed(sol.message, sol.t[-1] if sol.t.size else t0)
+        hit = None
+        if sol.status == 1 and evs:
+            hits = [(te[0], ye[0], g) for g, te, ye in zip(evs, sol.t_events, sol.y_events) if len(te)]
+            t_hit, y_hit, g = min(hits, key=lambda h: h[0])
+            hit = (t_hit, y_hit, [g.tag])
+        return np.asarray(sol.t, dtype=float).reshape(-1), np.asarray(sol.y, dtype=float).reshape(dim * K, -1), hit
+
     ts: list[np.ndarray] = []
     ys: list[np.ndarray] = []
     t0, y = 0.0, y0.reshape(-1).copy()
@@ -317,31 +354,26 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
     try:
         while True:
             segments += 1
-            evs = scalar_events()
             last = t0 >= horizon
             mask = (t_eval >= t0) & (t_eval <= horizon) if segments == 1 else (t_eval > t0) & (t_eval <= horizon)
             if last:
                 break
             with np.errstate(all="ignore"):
-                sol = solve_ivp(fun, (t0, horizon), y, method=method, t_eval=t_eval[mask], rtol=acc.rtol,
-                                atol=acc.atol, events=evs or None, **({"jac": jac_fn} if jac_fn else {}))
-            ts.append(np.asarray(sol.t, dtype=float).reshape(-1))
-            ys.append(np.asarray(sol.y, dtype=float).reshape(dim * K, -1))
-            if sol.status == -1:
-                raise _Failed(sol.message, sol.t[-1] if sol.t.size else t0)
-            if sol.status == 0 or not evs:
+                seg_t, seg_y, hit = segment(t0, y, t_eval[mask])
+            ts.append(seg_t)
+            ys.append(seg_y)
+            if hit is None:
                 break
-            # a terminal event: which one fired first
-            hits = [(te[0], ye[0], g) for g, te, ye in zip(evs, sol.t_events, sol.y_events) if len(te)]
-            t_hit, y_hit, g = min(hits, key=lambda h: h[0])
-            ev, k = g.tag
-            yk = y_hit.reshape(dim, K)
-            found[ev.name].append((k, float(t_hit), yk[:, k].copy()))
-            if ev.action == "stop":
-                alive[k] = False
-                t_stop[k] = t_hit
-            elif ev.on_event is not None:
-                ev.on_event(k, float(t_hit), yk[:, k].copy())
+            # a terminal event: the first one over all events and trajectories
+            t_hit, y_hit, fired = hit
+            yk = np.asarray(y_hit).reshape(dim, K)
+            for ev, k in fired:  # the first crossing, and any at the same time in other trajectories
+                found[ev.name].append((k, float(t_hit), yk[:, k].copy()))
+                if ev.action == "stop":
+                    alive[k] = False
+                    t_stop[k] = t_hit
+                elif ev.on_event is not None:
+                    ev.on_event(k, float(t_hit), yk[:, k].copy())
             t0, y = float(t_hit), y_hit.copy()
             if segments > 200:
                 raise _Failed("more than 200 events (chattering between branches)", t0)
