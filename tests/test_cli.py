@@ -104,3 +104,19 @@ def test_console_script_runs_the_bundled_example():
                           text=True, timeout=120)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "total 5 / 5" in proc.stdout
+
+
+def test_read_back_is_one_line_in_the_books_notation():
+    """The terminal read-back is one line per value: dots for velocities, subscripts, superscripts."""
+    import sympy as sp
+
+    from lagrade.readback import as_unicode
+
+    t = sp.Symbol("t")
+    th = sp.Function("theta1")(t)
+    l0, m1, alpha = sp.symbols("l_0 m1 alpha")
+    text = as_unicode(m1 * l0**2 * th.diff(t) ** 2 / 2 - sp.sqrt(alpha) * sp.cos(th))
+    assert "\n" not in text
+    for piece in ("θ̇₁²", "l₀²", "m₁", "√α", "cos(θ₁)"):
+        assert piece in text, (piece, text)
+    assert as_unicode([sp.Eq(th.diff(t, 2), -sp.sin(th))]) == "θ̈₁ = -sin(θ₁)"

@@ -158,10 +158,21 @@ def _show(value: Any) -> tuple[str | None, str | None]:
         return None, None
     if len(text) > MATHML_MAX_CHARS:
         return text[:MATHML_MAX_CHARS] + " ...", None
+    key = (type(value).__name__, text)
+    if key in _MATHML:  # a class hands in many identical answers; sympy's MathML printer is slow
+        return text, _MATHML[key]
     try:
-        return text, _mathml(value)
+        rendered = _mathml(value)
     except Exception:  # noqa: BLE001
-        return text, None
+        rendered = None
+    if len(_MATHML) >= 1024:
+        _MATHML.pop(next(iter(_MATHML)))
+    _MATHML[key] = rendered
+    return text, rendered
+
+
+#: MathML by the answer's type and text (sympy's str), in this grader process
+_MATHML: dict[tuple[str, str], str | None] = {}
 
 
 def _mathml(value: Any) -> str:

@@ -245,27 +245,32 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
     if t_eval is None:
         t_eval = np.linspace(0.0, horizon, samples)
     alive = np.ones(K, dtype=bool)
+    stopped = False  # some trajectory has stopped (alive is not all True)
     t_stop = np.full(K, horizon)
-    scale0: np.ndarray | None = None
     found: dict[str, list[tuple[int, float, np.ndarray]]] = {e.name: [] for e in events}
 
+    limit: np.ndarray | None = None   # per trajectory: rates beyond this mean a singularity
+    lowest = np.inf                  # the smallest of them: one comparison per call in the common case
+
     def fun(t: float, flat: np.ndarray) -> np.ndarray:
-        nonlocal count, scale0
+        # called hundreds of times per run on a few dozen numbers: every numpy call here counts
+        # (floating-point warnings are silenced once around the whole integration, not per call)
+        nonlocal count, limit, lowest
         count += 1
         if count > acc.max_rhs_evals:
             raise _TooManyEvaluations
-        with np.errstate(all="ignore"):
-            out = np.asarray(rates(t, flat.reshape(dim, K)), dtype=float)
-            out = out.reshape(dim, K)
-            if not alive.all():
-                out = out * alive
-            if guard:
-                size = np.abs(out).max(axis=0)
-                if scale0 is None:
-                    scale0 = 1.0 + size
-                elif np.any(size > SINGULAR_GROWTH * scale0):
-                    k = int(np.argmax(size / scale0))
-                    raise _Singular(t, k, float(size[k] / scale0[k]))
+        out = np.asarray(rates(t, flat.reshape(dim, K)), dtype=float).reshape(dim, K)
+        if stopped:
+            out = out * alive
+        if guard:
+            size = np.abs(out).max(axis=0)
+            if limit is None:
+                limit = SINGULAR_GROWTH * (1.0 + size)
+                lowest = float(limit.min())
+            elif size.max() > lowest and np.any(size > limit):
+                k = int(np.argmax(size / limit))
+                raise _Singular(float(np.max(t)) if np.ndim(t) else t, k,
+                                float(size[k] / limit[k] * SINGULAR_GROWTH))
         return out.reshape(-1)
 
     jac_fn = None
@@ -371,6 +376,7 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
                 found[ev.name].append((k, float(t_hit), yk[:, k].copy()))
                 if ev.action == "stop":
                     alive[k] = False
+                    stopped = True
                     t_stop[k] = t_hit
                 elif ev.on_event is not None:
                     ev.on_event(k, float(t_hit), yk[:, k].copy())
