@@ -1,7 +1,7 @@
 """Bulk grading: throughput and peak memory of ``lagrade grade`` on a class of one 2-DOF problem.
 
 Issue 7 targets 3 and 4: a 200-submission class graded in under 60 s on 2 cores, at >= 20x the
-throughput of one ``lagrade check`` process per file; peak resident memory flat in the number of
+throughput of one ``lagrade check`` process per file; peak memory (PSS) flat in the number of
 submissions (200 against 1000).
 
     python benchmarks/bulk.py                        # 200 submissions of 12.14, pool and baseline
@@ -12,8 +12,8 @@ The class is generated like the tests' (tests/bulk/classgen.py): the reference s
 rewrites, golden correct and wrong answers (typical mistakes) and broken files (syntax error, name
 error, empty, not UTF-8, bad TOML); no hostile files, whose cost is set by the time limits rather
 than by the grader. The grades are checked against the expected ones. ``lagrade grade`` runs as
-its own process, as an instructor runs it; its peak memory is the largest sum of the resident sizes
-of it and all its descendants (graders and sandbox children), sampled every 20 ms from /proc.
+its own process, as an instructor runs it; its peak memory is the largest sum of the proportional set sizes
+(PSS) of it and all its descendants (graders and sandbox children), sampled every 20 ms from /proc.
 The baseline runs ``lagrade check PROBLEM FILE --json`` in a fresh process per file, as a script
 would, on an evenly spread sample of the files. Both use the disk cache, built first with
 ``lagrade cache build`` (what an instructor runs once).
@@ -53,27 +53,36 @@ def make(tmp: Path, size: int, problem: str) -> tuple[Path, Path, list]:
     return root, hw, expected
 
 
+def _pss(pid: int) -> int:
+    """Proportional set size in bytes: a forked sandbox child shares most of its grader's pages, and
+    summing resident sizes would count those pages twice."""
+    try:
+        with open(f"/proc/{pid}/smaps_rollup") as fh:
+            for line in fh:
+                if line.startswith("Pss:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    return 0
+
+
 def _tree_rss(root_pid: int) -> int:
-    """Resident bytes of a process and all its descendants (Linux /proc)."""
+    """Memory of a process and all its descendants (Linux /proc), as the sum of their PSS."""
     children: dict[int, list[int]] = {}
-    rss: dict[int, int] = {}
-    page = os.sysconf("SC_PAGE_SIZE")
     for entry in os.listdir("/proc"):
         if not entry.isdigit():
             continue
         try:
             with open(f"/proc/{entry}/stat") as fh:
                 stat = fh.read()
-            fields = stat[stat.rindex(")") + 2:].split()
-            pid, ppid = int(entry), int(fields[1])
-            rss[pid] = int(fields[21]) * page
-            children.setdefault(ppid, []).append(pid)
+            ppid = int(stat[stat.rindex(")") + 2:].split()[1])
+            children.setdefault(ppid, []).append(int(entry))
         except (OSError, ValueError, IndexError):
             continue
     total, todo = 0, [root_pid]
     while todo:
         pid = todo.pop()
-        total += rss.get(pid, 0)
+        total += _pss(pid)
         todo.extend(children.get(pid, []))
     return total
 
@@ -134,7 +143,7 @@ def main() -> None:
                 root, hw, expected = make(tmp / f"m{size}", size, args.problem)
                 seconds, peak = run_grade(lagrade, root, hw, tmp / f"m{size}.sqlite", args.workers)
                 wrong = check_grades(tmp / f"m{size}.sqlite", expected, args.problem)
-                print(f"{len(expected):5d} submissions: {seconds:6.1f} s, peak resident memory "
+                print(f"{len(expected):5d} submissions: {seconds:6.1f} s, peak memory (PSS) "
                       f"{peak / 2**20:6.0f} MiB (lagrade grade and all its processes); {wrong} graded unexpectedly",
                       flush=True)
             return

@@ -68,7 +68,11 @@ def test_default_integrator_energy_drift_is_measured(mech, record_property):
     print(f"\nDOP853 rtol 1e-10 over {periods} periods: relative energy error at the end {err[:, -1]}, "
           f"drift {slope} per period, extrapolated to 10^4 periods {slope * 1e4}")
     record_property("dop853_drift_per_period", [float(s) for s in slope])
-    # it drifts: the error grows systematically (end well above the first tenth), small as it is
+    # it drifts: the error grows systematically (end well above the first tenth), small as it is. Each
+    # trajectory takes its own steps, so the easy small swing takes long ones whose dense-output error
+    # (~1e-10) is as large as its drift over 300 periods: the drift is asserted on the large swing,
+    # where it is 100 times that.
     tenth = err.shape[1] // 10
-    assert np.all(np.abs(err[:, -1]) > 2 * np.abs(err[:, :tenth]).max(axis=1))
+    assert np.abs(err[1, -1]) > 2 * np.abs(err[1, :tenth]).max()
+    assert slope[1] < 0 and abs(slope[1] * periods) > 0.5 * abs(err[1, -1])
     assert np.all(np.abs(err[:, -1]) < 1e-6)

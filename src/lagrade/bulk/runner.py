@@ -168,6 +168,8 @@ def run_local(jobs: Iterable[dict[str, Any]], sources: dict[str, str], workers: 
                         g.ready, g.started = True, now
                     else:
                         g.job = None
+                        if queue:  # the grader starts its next file while this result is written
+                            g.submit(queue.popleft())
                         done(msg)
                 elif g.ready and now - g.started > hard_deadline(job["limits"]):
                     g.kill()

@@ -13,6 +13,17 @@ Why this exists instead of ``scipy.integrate.solve_ivp(method="DOP853")``:
 * It does not import scipy: ``import scipy.integrate`` costs about 0.2 s per process, and a CLI
   check should stay near the floor set by importing sympy.
 
+Two integrators share the tableau, the dense-output matrix, the initial-step rule and Brent's method:
+
+* `dop853`: one step size and one time for the whole batch.  Every column repeats every rejection of
+  any column, and the step is always that of whichever column is hardest at the moment.
+* `dop853_columns`: every column has its own time and step size, stepped in lockstep (one batched
+  call of ``fun`` per stage, with a (K,) array of times), and accepts or rejects its own steps; the
+  number of iterations is then about the largest number of attempts any one column needs alone.
+  Measured on the double pendulum (problem 12.14, rtol = atol = 1e-10, 201 samples over 2 s):
+  K = 16 takes 704 evaluations instead of 1010 (the hardest trajectory alone: 674), K = 64 1052
+  instead of 1799 (alone: 998).  Its events are per column, stop it or let it continue.
+
 The method, the step-size control, the initial step and the 7th-order dense output follow scipy's
 ``DOP853`` (``scipy/integrate/_ivp/rk.py``), which follows Hairer's DOP853; terminal events are
 located with Brent's method on the dense output like ``solve_ivp`` does.
@@ -27,7 +38,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-__all__ = ["Event", "RKResult", "dop853"]
+__all__ = ["ColumnEvent", "ColumnResult", "Event", "RKResult", "dop853", "dop853_columns"]
 
 # ----------------------------------------------------------------------------- coefficients
 # Tableau copied from scipy/integrate/_ivp/dop853_coefficients.py (BSD-3-Clause, (c) SciPy Developers).
@@ -313,6 +324,41 @@ class RKResult:
     also: list[tuple[int, int]] = field(default_factory=list)
 
 
+@dataclass
+class ColumnEvent:
+    """An event of `dop853_columns`: ``fn(t, Y) -> (K,)`` with t the (K,) times of the columns.
+
+    ``direction``: as in ``solve_ivp``.  ``columns``: bool mask (K,) of the watched columns (None:
+    all); it is read again at every step, so ``on_event`` may change it (in place or by assigning
+    the attribute).  ``on_event(column, t, y_column)`` is called at the located root of that column:
+    True stops the column there (frozen from then on), False lets it continue from the root (the
+    callback may have changed what ``fn`` and ``fun`` depend on for that column, e.g. the branch of
+    a friction force).  None: stop.
+    """
+
+    fn: Callable[[np.ndarray, np.ndarray], np.ndarray]
+    direction: float = 0.0
+    columns: np.ndarray | None = None
+    on_event: Callable[[int, float, np.ndarray], bool] | None = None
+
+
+@dataclass
+class ColumnResult:
+    """Outcome of `dop853_columns`."""
+
+    t: np.ndarray            # (nt,) = t_eval
+    #: (dim, K, nt); a stopped column holds its frozen state after its stop time; on failure the
+    #: samples not reached are NaN
+    y: np.ndarray
+    t_stop: np.ndarray       # (K,) where each column stopped (t_end if it reached it; on failure: where it got)
+    status: int              # 0: every column reached t_end or stopped at an event; -1: failed
+    message: str
+    nfev: int                # number of calls of fun (each call evaluates all K columns)
+    events: list[tuple[int, int, float, np.ndarray]] = field(default_factory=list)  # (event, column, t, y)
+    failed_column: int | None = None
+    t_failed: float | None = None
+
+
 # ----------------------------------------------------------------------------- helpers
 
 
@@ -371,6 +417,27 @@ def _col_rms(v: np.ndarray, dim: int, K: int) -> np.ndarray:
     return np.sqrt(np.mean(np.square(v.reshape(dim, K)), axis=0))
 
 
+def _initial_probe(y0: np.ndarray, f0: np.ndarray, interval: float, rtol: float, atol: float,
+                   dim: int, K: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """First half of scipy's ``select_initial_step`` per column: (scale, d1, h0 per column)."""
+    scale = atol + np.abs(y0) * rtol
+    d0 = _col_rms(y0 / scale, dim, K)
+    d1 = _col_rms(f0 / scale, dim, K)
+    h0_col = np.where((d0 < 1e-5) | (d1 < 1e-5), 1e-6, 0.01 * d0 / np.where(d1 > 0, d1, 1.0))
+    return scale, d1, np.minimum(h0_col, interval)
+
+
+def _initial_from_probe(f0: np.ndarray, f1: np.ndarray, scale: np.ndarray, d1: np.ndarray, h0,
+                        dim: int, K: int) -> tuple[np.ndarray, np.ndarray]:
+    """Second half: per-column steps min(100 h0, h1) from the probe f1 = f(t0 + h0, y0 + h0 f0),
+    and which columns are flat (zero rates at t0 and at the probe).  ``h0``: scalar or (K,)."""
+    d2 = _col_rms((f1 - f0) / scale, dim, K) / h0
+    flat = (d1 <= 1e-15) & (d2 <= 1e-15)
+    h1 = np.where(flat, np.maximum(1e-6, h0 * 1e-3),
+                  (0.01 / np.where(flat, 1.0, np.maximum(d1, d2))) ** (1.0 / 8.0))
+    return np.minimum(100.0 * h0, h1), flat
+
+
 def _initial_step(fun, t0: float, y0: np.ndarray, f0: np.ndarray, t_end: float, rtol: float,
                   atol: float, dim: int, K: int) -> tuple[float, int]:
     """scipy's ``select_initial_step`` (Hairer II.4) per column; the batch takes the smallest.
@@ -382,18 +449,11 @@ def _initial_step(fun, t0: float, y0: np.ndarray, f0: np.ndarray, t_end: float, 
     this is exactly scipy's choice.  Returns (step, calls of fun).
     """
     interval = t_end - t0
-    scale = atol + np.abs(y0) * rtol
-    d0 = _col_rms(y0 / scale, dim, K)
-    d1 = _col_rms(f0 / scale, dim, K)
-    h0_col = np.where((d0 < 1e-5) | (d1 < 1e-5), 1e-6, 0.01 * d0 / np.where(d1 > 0, d1, 1.0))
+    scale, d1, h0_col = _initial_probe(y0, f0, interval, rtol, atol, dim, K)
     moving = d1 > 1e-15
-    h0 = min(float(np.min(h0_col[moving] if moving.any() else h0_col)), interval)
-    y1 = y0 + h0 * f0
-    f1 = np.asarray(fun(t0 + h0, y1.reshape(dim, K)), dtype=float).reshape(-1)
-    d2 = _col_rms((f1 - f0) / scale, dim, K) / h0
-    flat = (d1 <= 1e-15) & (d2 <= 1e-15)
-    h1 = np.where(flat, max(1e-6, h0 * 1e-3), (0.01 / np.where(flat, 1.0, np.maximum(d1, d2))) ** (1.0 / 8.0))
-    h_col = np.minimum(100.0 * h0, h1)
+    h0 = float(np.min(h0_col[moving] if moving.any() else h0_col))
+    f1 = np.asarray(fun(t0 + h0, (y0 + h0 * f0).reshape(dim, K)), dtype=float).reshape(-1)
+    h_col, flat = _initial_from_probe(f0, f1, scale, d1, h0, dim, K)
     h = float(np.min(h_col[~flat] if not flat.all() else h_col))
     if not math.isfinite(h):  # the probe met NaN/inf: let the step control shrink the step
         h = 100.0 * h0
@@ -401,6 +461,38 @@ def _initial_step(fun, t0: float, y0: np.ndarray, f0: np.ndarray, t_end: float, 
     if not h > 0.0:
         h = min(1e-6, interval)
     return h, 1
+
+
+def _initial_steps(fun, t0: float, y0: np.ndarray, f0: np.ndarray, t_end: float, rtol: float,
+                   atol: float, dim: int, K: int) -> np.ndarray:
+    """scipy's ``select_initial_step`` for every column on its own (one call of fun, each column
+    probed at its own t0 + h0_k): for each column exactly what scipy would choose for it alone."""
+    interval = t_end - t0
+    scale, d1, h0 = _initial_probe(y0, f0, interval, rtol, atol, dim, K)
+    f1 = np.asarray(fun(t0 + h0, (y0.reshape(dim, K) + h0 * f0.reshape(dim, K))), dtype=float).reshape(-1)
+    h, _ = _initial_from_probe(f0, f1, scale, d1, h0, dim, K)
+    h = np.where(np.isfinite(h), h, 100.0 * h0)  # the probe met NaN/inf: the step control shrinks it
+    h = np.minimum(h, interval)
+    return np.where(h > 0.0, h, min(1e-6, interval))
+
+
+def _validate(t0, y0, t_end, t_eval, rtol, atol, name: str):
+    """Checked arguments: (t0, y0 (dim, K), t_end, t_eval (nt,), rtol, atol)."""
+    t0 = float(t0)
+    t_end = float(t_end)
+    y0 = np.asarray(y0, dtype=float)
+    if y0.ndim != 2:
+        raise ValueError(f"y0 must have shape (dim, K), not {y0.shape}")
+    t_eval = np.asarray(t_eval, dtype=float).reshape(-1)
+    if t_end < t0:
+        raise ValueError(f"{name} integrates forward only: t_end must be >= t0")
+    if t_eval.size and (np.any(np.diff(t_eval) < 0) or t_eval[0] < t0 or t_eval[-1] > t_end):
+        raise ValueError("t_eval must be sorted and inside [t0, t_end]")
+    rtol = max(float(rtol), 100 * EPS)  # as scipy's validate_tol
+    atol = float(atol)
+    if atol < 0:
+        raise ValueError("atol must be >= 0")
+    return t0, y0, t_end, t_eval, rtol, atol
 
 
 # ----------------------------------------------------------------------------- the integrator
@@ -422,22 +514,9 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
     spent only on steps with an output time before their end, or a possible event.  All events are
     terminal: the run stops at the earliest root over all events and watched columns.
     """
-    t0 = float(t0)
-    t_end = float(t_end)
-    y0 = np.asarray(y0, dtype=float)
-    if y0.ndim != 2:
-        raise ValueError(f"y0 must have shape (dim, K), not {y0.shape}")
+    t0, y0, t_end, t_eval, rtol, atol = _validate(t0, y0, t_end, t_eval, rtol, atol, "dop853")
     dim, K = y0.shape
     n = dim * K
-    t_eval = np.asarray(t_eval, dtype=float).reshape(-1)
-    if t_end < t0:
-        raise ValueError("dop853 integrates forward only: t_end must be >= t0")
-    if t_eval.size and (np.any(np.diff(t_eval) < 0) or t_eval[0] < t0 or t_eval[-1] > t_end):
-        raise ValueError("t_eval must be sorted and inside [t0, t_end]")
-    rtol = max(float(rtol), 100 * EPS)  # as scipy's validate_tol
-    atol = float(atol)
-    if atol < 0:
-        raise ValueError("atol must be >= 0")
     n_eval = t_eval.size
     te_list = t_eval.tolist()
     out = np.empty((n_eval, n))
@@ -730,3 +809,417 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
 
 class _Budget(Exception):
     """Internal: the dense output would exceed ``max_evals``."""
+
+
+# ----------------------------------------------------------------------------- one step size per column
+
+
+def dop853_columns(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: float, y0: np.ndarray,
+                   t_end: float, *, rtol: float, atol: float, t_eval: np.ndarray,
+                   max_evals: int | None = None, events: Sequence[ColumnEvent] = (),
+                   max_events_per_column: int = 200) -> ColumnResult:
+    """Integrate the K columns of ``y0`` (dim, K) from t0 to t_end, each with its own time and step.
+
+    The columns are stepped in lockstep: every iteration evaluates the 12 stages once for all K
+    columns, column k at its own t_k with its own h_k, so ``fun(t, Y)`` gets a (K,) array of times
+    (stage s: t_k + c_s h_k) and a (dim, K) state and returns (dim, K); it must not keep or modify
+    its arguments (the buffers are reused).  Each column accepts or rejects its own step with its own
+    error norm and step-size control (scipy's DOP853 for that column alone), so the number of
+    iterations is about the largest number of attempts any column needs alone, where `dop853`'s
+    shared step repeats every column's rejections for all and follows the hardest column at each
+    moment.  A column that has reached t_end or was stopped by an event is still evaluated (``fun``
+    always gets all K columns) but does not move (h_k = 0).
+
+    Samples at ``t_eval`` come from each column's 7th-order dense output; the 3 extra stages are
+    evaluated (for all columns at once) only in iterations where some accepted step holds an output
+    time or a possible event.  Events are located per column with Brent's method on that column's
+    dense output (see `ColumnEvent` for stop and continue).  A column that continues restarts from
+    the root with the step size of the step that held it, and its first stage is recomputed there
+    (one extra call of fun), since the callback may have changed the dynamics.
+
+    Exceptions from ``fun``, an event function or a callback propagate unchanged; floating-point
+    warnings are silenced for the run.  The whole run fails (status -1, the column and time in the
+    message) when any column's step falls below 10 ulp of its time (also after NaN/inf, which
+    shrink the step), when ``max_evals`` would be exceeded, or when a column has more than
+    ``max_events_per_column`` events.
+    """
+    t0, y0, t_end, t_eval, rtol, atol = _validate(t0, y0, t_end, t_eval, rtol, atol, "dop853_columns")
+    dim, K = y0.shape
+    n = dim * K
+    n_eval = t_eval.size
+    out = np.full((dim, K, n_eval), np.nan)
+    i_first = int(np.searchsorted(t_eval, t0, side="right"))
+    out[:, :, :i_first] = y0[:, :, None]
+    i_eval = np.full(K, i_first, dtype=np.intp)  # per column: its next sample not yet written
+    columns = np.arange(K)
+    t_stop = np.full(K, t_end)
+    found: list[tuple[int, int, float, np.ndarray]] = []
+    nfev = 0
+    t = np.full(K, t0)                            # each column's time
+    active = np.ones(K, dtype=bool)               # neither at t_end nor stopped by an event
+
+    def result(status: int, message: str, column: int | None = None, when: float | None = None):
+        return ColumnResult(t_eval.copy(), out, t_stop, status, message, nfev, found, column, when)
+
+    def failure(k: int, message: str, when: float) -> ColumnResult:
+        t_stop[active] = t[active]
+        return result(-1, message, k, when)
+
+    def over_budget() -> ColumnResult:
+        k = int(np.argmin(np.where(active, t, np.inf)))  # the column furthest behind
+        return failure(k, f"trajectory {k} stopped at t = {t[k]:.17g}: integration needs more than "
+                          f"{max_evals} evaluations of the rates", float(t[k]))
+
+    if t_end == t0:
+        return result(0, "the interval is empty")
+    limit = math.inf if max_evals is None else max_evals
+
+    # ---- preallocated work arrays.  The stages are stored scaled by their column's step,
+    # Z = [y, h K_0, ..., h K_15], so stage s is the constant row [1, A[s, :s]] times Z[:s + 1]:
+    # one product per stage, and the per-column h costs one broadcast multiply of what fun returns
+    # (which replaces the copy into the stage array).
+    Z = np.empty((N_STAGES_EXTENDED + 1, n))
+    Z2 = [row.reshape(dim, K) for row in Z]
+    y_old, y2 = Z[0], Z2[0]
+    y_old[...] = y0.reshape(-1)
+    F0 = np.empty((dim, K))                       # f(t_k, y_k) unscaled: the next K_0 is h * F0
+    T = np.empty((N_STAGES_EXTENDED, K))          # stage times t_k + c_s h_k
+    Ccol = C[:, None]
+    rows = [np.concatenate(([1.0], A[s, :s])) for s in range(N_STAGES_EXTENDED)]
+    stage_plan = [(rows[s], Z[:s + 1], Z2[s + 1], T[s]) for s in range(1, N_STAGES)]
+    dense_plan = [(rows[s], Z[:s + 1], Z2[s + 1], T[s]) for s in range(N_STAGES + 1, N_STAGES_EXTENDED)]
+    row_new = np.concatenate(([1.0], B))
+    Z_new = Z[:N_STAGES + 1]
+    hf_new2 = Z2[N_STAGES + 1]
+    Kerr = Z[1:N_STAGES + 2]
+    Kext = Z[1:]
+    ystage = np.empty(n)
+    ystage2 = ystage.reshape(dim, K)
+    ynew = np.empty(n)
+    ynew2 = ynew.reshape(dim, K)
+    a_r = atol / rtol
+    absa_old = np.abs(y_old) + a_r
+    absa_old2 = absa_old.reshape(dim, K)
+    absa_new = np.empty(n)
+    absa_new2 = absa_new.reshape(dim, K)
+    scale = np.empty(n)
+    err = np.empty((2, n))
+    err3 = err.reshape(2, dim, K)
+    colsum = np.empty((2, K))
+    cs5 = colsum[0]
+    den = np.empty(K)
+    num = np.empty(K)
+    w_err = np.array([1.0, 0.01])
+    P = np.empty((INTERPOLATOR_POWER, n))         # monomial coefficients of every column's dense output
+    P3 = P.reshape(INTERPOLATOR_POWER, dim, K)
+    h = np.zeros(K)
+    rejected = np.zeros(K, dtype=bool)            # rejected since the column's last accepted step
+    need_f0 = np.zeros(K, dtype=bool)             # restarted at an event: K_0 must be recomputed
+    n_ev_col = np.zeros(K, dtype=np.intp)
+    #: column -> the events that fired where it restarted, until its first step from there is
+    #: accepted: a root of theirs at the restart time is the one just handled, not a new one (the
+    #: root is only known to rounding, so the event may still sit on its old side there)
+    handled: dict[int, list[int]] = {}
+
+    def make_dense() -> None:
+        """The 3 extra stages (all columns) and the monomial coefficients P of every column's step."""
+        nonlocal nfev
+        if nfev + 3 > limit:
+            raise _Budget
+        for row, zs, dst, ts in dense_plan:
+            _dot(row, zs, out=ystage)
+            np.multiply(fun(ts, ystage2), h, out=dst)
+        nfev += 3
+        _dot(_W, Kext, out=P)
+
+    def interp_all(x: float) -> np.ndarray:
+        """Every column's dense output at the same fraction x of its step (a new (dim, K) array)."""
+        xp = [x]
+        for _ in range(INTERPOLATOR_POWER - 1):
+            xp.append(xp[-1] * x)
+        return np.dot(xp, P).reshape(dim, K) + y2
+
+    n_events = len(events)
+    ev_fns = [e.fn for e in events]
+    ev_dir = [float(e.direction) for e in events]
+
+    def g_all(i: int, tt: np.ndarray, Y: np.ndarray) -> np.ndarray:
+        g = np.array(ev_fns[i](tt, Y), dtype=float).reshape(-1)
+        if g.shape != (K,):
+            raise ValueError(f"an event function must return shape ({K},), not {g.shape}")
+        return g
+
+    def watched(i: int) -> np.ndarray | None:
+        cols = events[i].columns
+        return None if cols is None else np.asarray(cols, dtype=bool).reshape(K)
+
+    with np.errstate(all="ignore"):
+        g_old = [g_all(i, t, y2) for i in range(n_events)]
+        F0[...] = fun(t, y2)
+        nfev += 1
+        h_abs = _initial_steps(fun, t0, y_old, F0.reshape(-1).copy(), t_end, rtol, atol, dim, K)
+        nfev += 1
+
+        dot, multiply, divide, square, maximum, minimum, absolute, add, where, copyto = (
+            _dot, np.multiply, np.divide, np.square, np.maximum, np.minimum, np.absolute, np.add,
+            np.where, np.copyto)
+        spacing, sqrt, fmax = np.spacing, np.sqrt, np.fmax
+        add_reduce = np.add.reduce
+        E_ = _E
+        restarted = False
+
+        while True:
+            if restarted:  # K_0 of the columns restarted at an event: f at the root, new dynamics
+                if nfev + 1 > limit:
+                    return over_budget()
+                copyto(F0, fun(t, y2), where=need_f0)
+                nfev += 1
+                need_f0[:] = False
+                restarted = False
+
+            # ---- each column's step: at least 10 ulp of its time, unless shrinking after rejections
+            min_step = 10.0 * spacing(absolute(t))
+            h_abs = where(rejected, h_abs, maximum(h_abs, min_step))
+            small = (h_abs < min_step) & active
+            if small.any():
+                k = int(np.argmax(small))
+                return failure(k, f"step size too small in trajectory {k} at t = {t[k]:.17g}", float(t[k]))
+            if nfev + N_STAGES > limit:
+                return over_budget()
+            t_new = where(active, minimum(t + h_abs, t_end), t)
+            h = t_new - t                     # 0 for the columns that do not move
+
+            multiply(F0, h, out=Z2[1])
+            multiply(Ccol, h, out=T)
+            add(T, t, out=T)
+            for row, zs, dst, ts in stage_plan:
+                dot(row, zs, out=ystage)
+                multiply(fun(ts, ystage2), h, out=dst)
+            dot(row_new, Z_new, out=ynew)
+            f_new = fun(t_new, ynew2)
+            multiply(f_new, h, out=hf_new2)
+            nfev += N_STAGES
+
+            # ---- DOP853's error norm per column (RMS over dim); h is already in the stages.  Nothing
+            # here mixes columns, so a NaN in one column rejects only that column's step.
+            absolute(ynew, out=absa_new)
+            add(absa_new, a_r, out=absa_new)
+            maximum(absa_old, absa_new, out=scale)
+            dot(E_, Kerr, out=err)
+            divide(err, scale, out=err)
+            square(err, out=err)
+            add_reduce(err3, axis=1, out=colsum)   # not a product with a 0/1 matrix: 0 * NaN = NaN
+            dot(w_err, colsum, out=den)
+            square(cs5, out=num)
+            copyto(den, 1.0, where=den == 0.0)   # both estimates exactly 0: the norm is 0
+            divide(num, den, out=num)
+            error_norm = sqrt(num / dim) / rtol
+
+            # ---- each column's step-size control (scipy's constants); NaN counts as a rejection
+            accepted = error_norm < 1.0
+            accepted &= active
+            factor = SAFETY * error_norm ** ERROR_EXPONENT   # inf for a zero norm, NaN for NaN
+            grow = minimum(factor, MAX_FACTOR)
+            grow = where(rejected, minimum(grow, 1.0), grow)  # no growth right after a rejection
+            h_abs = h * where(accepted, grow, fmax(factor, MIN_FACTOR))
+            rejected = active & ~accepted
+            if not accepted.any():
+                continue
+
+            # ---- accepted steps [t_k, t_new_k]
+            copyto(F0, f_new, where=accepted)   # FSAL: before fun is called again for the dense output
+            copyto(absa_old2, absa_new2, where=accepted)
+            t_next = where(accepted, t_new, t)
+            copyto(ynew2, y2, where=~accepted)   # ynew: every column's state after this iteration
+            dense = False
+            # (column, root, state there, stop, [(fired event, its value at the root before the callbacks)])
+            cuts: list[tuple[int, float, np.ndarray, bool, list[tuple[int, float]]]] = []
+            try:
+                if n_events:
+                    g_new = [g_all(i, t_next, ynew2) for i in range(n_events)]
+                    per_col: dict[int, list[int]] = {}
+                    for i in range(n_events):
+                        maybe = g_old[i] * g_new[i] <= 0.0  # cheap superset of the sign changes
+                        maybe &= accepted
+                        w = watched(i)
+                        if w is not None:
+                            maybe &= w
+                        if maybe.any():
+                            for k in np.flatnonzero(maybe).tolist():
+                                per_col.setdefault(k, []).append(i)
+                    g_zero: dict[int, np.ndarray] = {}
+                    for k in sorted(per_col):
+                        tk, hk, tk_new = float(t[k]), float(h[k]), float(t_new[k])
+                        cands: list[tuple[int, float, float]] = []  # (event, g at bracket start, start)
+                        for i in per_col[k]:
+                            gl, gr, tl = float(g_old[i][k]), float(g_new[i][k]), tk
+                            if gl == 0.0:
+                                if gr == 0.0:
+                                    continue  # zero at both ends: not a crossing
+                                # zero at the step start: leaving zero in the watched direction is a
+                                # root right there (as in solve_ivp and `dop853`)
+                                if not dense:
+                                    make_dense()
+                                    dense = True
+                                if i not in g_zero:
+                                    g_zero[i] = g_all(i, t + _ZERO_START_OFFSET * h, interp_all(_ZERO_START_OFFSET))
+                                tl = tk + _ZERO_START_OFFSET * hk
+                                gl = float(g_zero[i][k])
+                                if gl == 0.0:
+                                    continue
+                                if _crosses(0.0, gl, ev_dir[i]):
+                                    cands.append((i, 0.0, tk))
+                                    continue
+                            if _crosses(gl, gr, ev_dir[i]):
+                                cands.append((i, gl, tl))
+                        if not cands:
+                            continue
+                        if not dense:
+                            make_dense()
+                            dense = True
+                        Pk = P3[:, :, k].copy()
+                        yk = y2[:, k].copy()
+                        T_try = t.copy()    # other columns: their current (valid) states
+                        Y_try = y2.copy()
+
+                        def interp_k(tt: float, Pk=Pk, yk=yk, tk=tk, hk=hk) -> np.ndarray:
+                            x = (tt - tk) / hk
+                            xp = [x]
+                            for _ in range(INTERPOLATOR_POWER - 1):
+                                xp.append(xp[-1] * x)
+                            return np.dot(xp, Pk) + yk
+
+                        def g_col(i: int, tt: float, k=k, T_try=T_try, Y_try=Y_try, interp_k=interp_k) -> float:
+                            T_try[k] = tt
+                            Y_try[:, k] = interp_k(tt)
+                            return float(np.asarray(ev_fns[i](T_try, Y_try), dtype=float).reshape(-1)[k])
+
+                        # earliest root over this column's events (as `dop853` over all columns)
+                        best_t = tk_new
+                        hit = None
+                        done_here = handled.get(k, ())
+                        t_same = tk + SIMULTANEOUS * max(1.0, abs(tk))
+                        for i, gl, tl in cands:
+                            if tl >= best_t:
+                                continue
+                            if best_t == tk_new:
+                                gr = float(g_new[i][k])
+                            else:
+                                gr = g_col(i, best_t)
+                                if not _crosses(gl, gr, ev_dir[i]):
+                                    continue
+                            root = _brentq(lambda tt, i=i: g_col(i, tt), tl, best_t, gl, gr)
+                            if i in done_here and root <= t_same:
+                                continue  # the crossing handled at the restart
+                            if hit is None or root < best_t:
+                                best_t = root
+                                hit = i
+                        if hit is None:
+                            continue
+                        # other events of this column crossing at (about) the same time fire with it:
+                        # after a restart at this root their values would already be past zero
+                        fired = [hit]
+                        t_near = min(tk_new, best_t + SIMULTANEOUS * max(1.0, abs(best_t)))
+                        for i, gl, tl in cands:
+                            if i in fired or tl > t_near or (i in done_here and best_t <= t_same):
+                                continue
+                            if _crosses(gl, g_col(i, t_near), ev_dir[i]):
+                                fired.append(i)
+                        y_root = ynew2[:, k].copy() if best_t == tk_new else interp_k(best_t)
+                        # the fired events at the root before the callbacks: an event whose value
+                        # the callbacks leave alone has been crossed; one they change (a new branch)
+                        # is watched again from zero there
+                        T_try[k] = best_t
+                        Y_try[:, k] = y_root
+                        g_pre = [float(np.asarray(ev_fns[i](T_try, Y_try), dtype=float).reshape(-1)[k])
+                                 for i in fired]
+                        stop = False
+                        for i in fired:
+                            found.append((i, k, best_t, y_root.copy()))
+                            n_ev_col[k] += 1
+                            if n_ev_col[k] > max_events_per_column:
+                                return failure(k, f"more than {max_events_per_column} events in trajectory {k} "
+                                                  f"(chattering between branches), the last at t = {best_t:.17g}",
+                                               best_t)
+                            cb = events[i].on_event
+                            if cb is None or cb(k, best_t, y_root.copy()):
+                                stop = True
+                        cuts.append((k, best_t, y_root, stop, list(zip(fired, g_pre))))
+
+                # ---- output samples in (t_k, t_cut_k] of the accepted columns, all at once
+                if cuts:
+                    t_cut = t_next.copy()
+                    for k, root, *_ in cuts:
+                        t_cut[k] = root
+                else:
+                    t_cut = t_next
+                cnt = np.searchsorted(t_eval, t_cut, side="right")
+                cnt -= i_eval
+                cnt *= accepted                       # samples per column in its step
+                n_samples = int(cnt.sum())
+                if n_samples:
+                    cr = np.repeat(columns, cnt)      # (column, sample) of each of them
+                    sidx = np.arange(n_samples) + np.repeat(i_eval - (np.cumsum(cnt) - cnt), cnt)
+                    te = t_eval[sidx]
+                    inner = te < t_new[cr]            # at the step end: y_new itself
+                    if inner.any():
+                        if not dense:
+                            make_dense()
+                            dense = True
+                        X = ((te - t[cr]) / h[cr])[:, None] ** _POWERS
+                        vals = np.einsum("mp,pdm->dm", X, P3[:, :, cr]) + y2[:, cr]
+                        at_end = ~inner
+                        if at_end.any():
+                            vals[:, at_end] = ynew2[:, cr[at_end]]
+                    else:
+                        vals = ynew2[:, cr]
+                    out[:, cr, sidx] = vals
+                    i_eval += cnt
+            except _Budget:
+                return over_budget()
+
+            # ---- advance every column to its new state
+            y_old[...] = ynew
+            t = t_next
+            if handled:
+                for k in [k for k in handled if accepted[k]]:
+                    del handled[k]
+            for i in range(n_events):   # only where a step was accepted: a restart's 0 must survive rejections
+                copyto(g_old[i], g_new[i], where=accepted)
+            if cuts:
+                restart = np.zeros(K, dtype=bool)
+                for k, root, y_root, stop, fired in cuts:
+                    y2[:, k] = y_root
+                    t[k] = root
+                    absa_old2[:, k] = np.abs(y_root) + a_r
+                    if stop:
+                        active[k] = False
+                        t_stop[k] = root
+                        F0[:, k] = 0.0
+                        out[:, k, i_eval[k]:] = y_root[:, None]
+                        i_eval[k] = n_eval
+                    else:
+                        restart[k] = True
+                        h_abs[k] = h[k]   # the step size of the step that held the root
+                if restart.any():
+                    need_f0 |= restart
+                    restarted = True
+                    for i in range(n_events):   # the callbacks may have changed the event functions too
+                        copyto(g_old[i], g_all(i, t, y2), where=restart)
+                    for k, root, y_root, stop, fired in cuts:
+                        if stop:
+                            continue
+                        for i, g_before in fired:
+                            if g_old[i][k] == g_before:
+                                # unchanged: the crossing is behind; a root of it at the restart
+                                # time (it is only known to rounding) is this one again
+                                handled.setdefault(k, []).append(i)
+                            else:
+                                # a new branch: the event starts from zero there, so leaving zero in
+                                # the watched direction fires at once (chattering shows as events)
+                                g_old[i][k] = 0.0
+            active &= t < t_end
+            if not active.any():
+                break
+
+    return result(0, "every trajectory reached the end of the interval or stopped at an event")

@@ -39,9 +39,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from lagrade.compare.dop853 import Event, dop853
+from lagrade.compare.dop853 import ColumnEvent, Event, dop853, dop853_columns
 
-Rates = Callable[[float, np.ndarray], np.ndarray]  # (t, y of shape (dim, K)) -> (dim, K)
+#: (t, y of shape (dim, K)) -> (dim, K); t is one time for the batch, or (K,) times, one per trajectory
+#: (the DOP853 path steps each trajectory with its own step size)
+Rates = Callable[[float | np.ndarray, np.ndarray], np.ndarray]
 
 METHODS = ("DOP853", "RK45", "Radau", "LSODA", "BDF")
 
@@ -324,10 +326,39 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
                 out.append((ev, Event(ev.fn, ev.direction, act)))
         return out
 
+    def columns(t0: float, y: np.ndarray, times: np.ndarray):
+        """The whole horizon in one call, each trajectory with its own time and step (compare/dop853.py):
+        the batch costs about what its hardest trajectory costs alone. Stop events freeze their
+        trajectory where they fire; nothing restarts."""
+        nonlocal stopped
+
+        def stop(ev: BatchedEvent):
+            def on_event(k: int, t: float, yk: np.ndarray) -> bool:
+                nonlocal stopped
+                found[ev.name].append((k, float(t), np.array(yk, dtype=float)))
+                alive[k] = False
+                stopped = True
+                t_stop[k] = t
+                return True
+            return on_event
+
+        evs = []
+        for ev in events:
+            act = alive & (ev.active() if ev.active is not None else True)
+            if act.any():
+                evs.append(ColumnEvent(ev.fn, ev.direction, act, stop(ev)))
+        res = dop853_columns(lambda t, Y: fun(t, Y.reshape(-1)).reshape(dim, K), t0, y.reshape(dim, K), horizon,
+                             rtol=acc.rtol, atol=acc.atol, t_eval=times, events=evs)
+        if res.status == -1:
+            raise _Failed(res.message, res.t_failed if res.t_failed is not None else t0)
+        return res.t, res.y.reshape(dim * K, -1), None
+
     def segment(t0: float, y: np.ndarray, times: np.ndarray):
         """One stretch up to the horizon or the first event: (t, y (dim*K, nt), hit), where hit is None
         or (t, y, [(event, trajectory), ...]) for the first crossing and any simultaneous ones."""
-        if method == "DOP853":  # batched, per-trajectory error control, no scipy import (compare/dop853.py)
+        if method == "DOP853" and all(ev.action == "stop" for ev in events):
+            return columns(t0, y, times)
+        if method == "DOP853":  # switching events: one shared step, the batch restarts at each switch
             evs = batched_events()
             res = dop853(lambda t, Y: fun(t, Y.reshape(-1)).reshape(dim, K), t0, y.reshape(dim, K), horizon,
                          rtol=acc.rtol, atol=acc.atol, t_eval=times, events=[e for _, e in evs])
@@ -545,7 +576,8 @@ def _reference_run(reference: Rates, y0: np.ndarray, horizon: float, acc: Accura
     if chaos and not events:
         # the displaced copies double the batch: cheaper than a second call, and still one solve_ivp
         def pair_rates(t: float, Y: np.ndarray) -> np.ndarray:
-            return np.concatenate([reference(t, Y[:, :K]), reference(t, Y[:, K:])], axis=1)
+            t1, t2 = (t, t) if np.ndim(t) == 0 else (t[:K], t[K:])  # each trajectory may have its own time
+            return np.concatenate([reference(t1, Y[:, :K]), reference(t2, Y[:, K:])], axis=1)
 
         pair = integrate(pair_rates, np.concatenate([y0, _displaced(y0)], axis=1), window, acc, method=method)
         ref = Run(pair.t, pair.y[:, :K], pair.ok, pair.message, pair.rhs_evals, pair.seconds, method,

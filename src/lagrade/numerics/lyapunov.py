@@ -25,8 +25,9 @@ def finite_time_lyapunov(rates: Rates, y0: np.ndarray, T: float, acc: Accuracy, 
     total = np.zeros(K)
     t = 0.0
 
-    def pair(tt: float, Y: np.ndarray) -> np.ndarray:
-        return np.concatenate([rates(tt, Y[:, :K]), rates(tt, Y[:, K:])], axis=1)
+    def pair(tt, Y: np.ndarray) -> np.ndarray:
+        t1, t2 = (tt, tt) if np.ndim(tt) == 0 else (tt[:K], tt[K:])  # one time per trajectory, or one for all
+        return np.concatenate([rates(t1, Y[:, :K]), rates(t2, Y[:, K:])], axis=1)
 
     while t < T - 1e-12:
         step = min(renorm, T - t)
