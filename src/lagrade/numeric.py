@@ -110,6 +110,100 @@ def _lambdified(exprs: list[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
     return evaluate
 
 
+# --------------------------------------------------------------------------- evaluating once
+
+_FUNCTIONS: dict[str, Callable[..., np.ndarray]] = {
+    "sin": np.sin, "cos": np.cos, "tan": np.tan, "cot": lambda x: 1.0 / np.tan(x),
+    "sec": lambda x: 1.0 / np.cos(x), "csc": lambda x: 1.0 / np.sin(x),
+    "asin": np.arcsin, "acos": np.arccos, "atan": np.arctan, "atan2": np.arctan2,
+    "sinh": np.sinh, "cosh": np.cosh, "tanh": np.tanh, "asinh": np.arcsinh, "acosh": np.arccosh,
+    "atanh": np.arctanh, "exp": np.exp, "Abs": np.abs, "sign": np.sign, "floor": np.floor,
+    "ceiling": np.ceil, "re": np.real, "im": np.imag, "conjugate": np.conj,
+    "Heaviside": lambda x, h=0.5: np.heaviside(x, h),
+    "Max": lambda *a: np.maximum.reduce(np.broadcast_arrays(*a)),
+    "Min": lambda *a: np.minimum.reduce(np.broadcast_arrays(*a)),
+}
+_COMPARE = {"StrictLessThan": np.less, "LessThan": np.less_equal, "StrictGreaterThan": np.greater,
+            "GreaterThan": np.greater_equal, "Equality": np.equal, "Unequality": np.not_equal,
+            "And": np.logical_and, "Or": np.logical_or, "Not": np.logical_not}
+
+
+class _Unsupported(Exception):
+    pass
+
+
+def evaluate(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol], arrays: Sequence[np.ndarray]) -> np.ndarray:
+    """``compile_exprs(exprs, args)(*arrays)`` for expressions evaluated once, without compiling.
+
+    Most evidence is one evaluation at a few dozen sampled states; printing and compiling code for
+    that costs milliseconds per expression, walking the expression tree with numpy (shared subtrees
+    once) costs tens of microseconds. A node the walker does not know is compiled instead."""
+    exprs = [sp.sympify(e) for e in exprs]
+    try:
+        return _walk(exprs, args, arrays)
+    except _Unsupported:
+        return compile_exprs(exprs, args)(*arrays)
+
+
+def _walk(exprs: list[sp.Expr], args: Sequence[sp.Symbol], arrays: Sequence[np.ndarray]) -> np.ndarray:
+    env: dict[sp.Basic, object] = {a: np.asarray(v, dtype=float) for a, v in zip(args, arrays)}
+
+    def ev(e: sp.Basic):
+        hit = env.get(e)
+        if hit is not None:
+            return hit
+        if e.is_Number or e.is_NumberSymbol:
+            r = np.complex128(complex(e)) if e.is_extended_real is False else np.float64(float(e))
+        elif e is sp.I:
+            r = np.complex128(1j)
+        elif e.is_Add:
+            parts = [ev(a) for a in e.args]
+            r = parts[0]
+            for x in parts[1:]:
+                r = r + x
+        elif e.is_Mul:
+            parts = [ev(a) for a in e.args]
+            r = parts[0]
+            for x in parts[1:]:
+                r = r * x
+        elif e.is_Pow:
+            base, exp = e.args
+            b = ev(base)
+            if exp is sp.S.Half:
+                r = np.sqrt(b)
+            elif exp.is_Integer:
+                k = int(exp)
+                r = b ** k if k > 0 else np.float64(1.0) / (b ** -k) if k < 0 else np.ones_like(b)
+            else:
+                r = np.power(b, ev(exp))
+        elif isinstance(e, sp.Piecewise):
+            conds = [np.broadcast_to(ev(c), shape) for _, c in e.args]
+            vals = [np.broadcast_to(ev(v), shape) for v, _ in e.args]
+            r = np.select(conds, vals, default=np.nan)
+        elif e is sp.true or e is sp.false:
+            r = np.bool_(bool(e))
+        elif e is sp.zoo or e is sp.nan:
+            r = np.float64(np.nan)
+        elif type(e).__name__ in _COMPARE:
+            r = _COMPARE[type(e).__name__](*(ev(a) for a in e.args))
+        elif isinstance(e, sp.Function) and type(e).__name__ in _FUNCTIONS:
+            r = _FUNCTIONS[type(e).__name__](*(ev(a) for a in e.args))
+        elif isinstance(e, sp.log):
+            r = np.log(ev(e.args[0])) if len(e.args) == 1 else np.log(ev(e.args[0])) / np.log(ev(e.args[1]))
+        else:
+            raise _Unsupported(type(e).__name__)
+        env[e] = r
+        return r
+
+    shape = np.broadcast(*arrays).shape if arrays else ()
+    out = np.empty((len(exprs), *shape))
+    with np.errstate(all="ignore"):
+        for i, e in enumerate(exprs):
+            v = ev(e)
+            out[i] = v.real if np.iscomplexobj(v) else v
+    return out
+
+
 def compile_linear_solve(A: Sequence[Sequence[sp.Expr]], b: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
     """``x(*arrays)`` of shape (n, K) with ``A x = b`` at each point of a batch, compiled once.
 

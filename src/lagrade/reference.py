@@ -46,6 +46,7 @@ class Mechanics:
         self._parsed: dict[tuple, sp.Expr] = {}
         self._points: dict[tuple, object] = {}
         self.runs: dict[tuple, tuple] = {}  # reference integrations (lagrade.compare.trajectory)
+        self._rows_of: dict[sp.Expr, list[sp.Expr]] = {}  # answers' Lagrange equations (not kept on disk)
         self.all_names = tuple(c.name for c in system.coordinates)
         self.names = tuple(c.name for c in system.free_coordinates)
         self.full = StateSymbols(self.all_names)
@@ -99,7 +100,20 @@ class Mechanics:
         validate_effects(self)
 
     def __getstate__(self) -> dict:
-        return {**self.__dict__, "problem": None}  # see ReferenceCache
+        return {**self.__dict__, "problem": None, "_rows_of": {}}  # see ReferenceCache
+
+    def lagrange_rows(self, L: sp.Expr) -> list[sp.Expr]:
+        """``d/dt dL/dq' - dL/dq - Q`` of any Lagrangian on this system's coordinates, with the scene's
+        forces. Differentiating is the slow part of checking an L (sympy re-derives assumptions), and
+        the value check, the solver for its motion and a proof all need the same rows: made once."""
+        if L == self.L:
+            return self.EL
+        rows = self._rows_of.get(L)
+        if rows is None:
+            if len(self._rows_of) >= 64:
+                self._rows_of.pop(next(iter(self._rows_of)))
+            rows = self._rows_of[L] = [e - Qi for e, Qi in zip(euler_lagrange(L, self.s), self.Q)]
+        return rows
 
     def _parse(self, text: str, what: str, params: Sequence[str]) -> sp.Expr:
         extra = [c.multiplier for c in self.system.constraints if c.multiplier]

@@ -76,14 +76,14 @@ def with_reference_dynamics(mech: Mechanics, pts: Points) -> Points:
         vals[sym] = p
     base = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *mech.params]
     base_vals = [vals[s] for s in base]
-    from lagrade.numeric import compile_exprs
+    from lagrade.numeric import evaluate
 
     if mech.constrained:
         syms = list(mech.constrained)
-        for sym, v in zip(syms, compile_exprs([mech.constrained[s] for s in syms], base)(*base_vals)):
+        for sym, v in zip(syms, evaluate([mech.constrained[s] for s in syms], base, base_vals)):
             vals[sym] = v
     if mech.multiplier_exprs:
         syms = list(mech.multiplier_exprs)
-        for sym, v in zip(syms, compile_exprs([mech.multiplier_exprs[s] for s in syms], base)(*base_vals)):
+        for sym, v in zip(syms, evaluate([mech.multiplier_exprs[s] for s in syms], base, base_vals)):
             vals[sym] = v
     return Points(vals, pts.K)

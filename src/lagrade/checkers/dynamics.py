@@ -18,8 +18,8 @@ from lagrade.checkers.base import Context, InvalidAnswer, equation_rows, graded,
 from lagrade.compare.equations import CompiledRows, analyse_rows
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs
-from lagrade.numeric import agree, compile_exprs, scale_of
-from lagrade.reference import Mechanics, euler_lagrange
+from lagrade.numeric import agree, compile_exprs, evaluate, scale_of
+from lagrade.reference import Mechanics
 from lagrade.result import PartResult
 from lagrade.sampling import rng_for, sample_points, state_arrays, with_reference_dynamics
 from lagrade.spec import Part
@@ -188,14 +188,12 @@ def _el_matrix(L: sp.Expr, mech: Mechanics, pts, part: Part) -> np.ndarray:
     """Lagrange's equations of ``L`` with the scene's generalized forces, ``d/dt dL/dq' - dL/dq - Q``,
     at the sampled states (random accelerations): with Q != 0 a scaled L is no longer equivalent."""
     args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *mech.params, *(sp.Symbol(s) for s in part.symbols)]
-    rows = [e - Qi for e, Qi in zip(euler_lagrange(L, mech.s), mech.Q)]
-    return compile_exprs(rows, args)(*pts.args(args))
+    return evaluate(mech.lagrange_rows(L), args, pts.args(args))
 
 
 def _lagrange_solver(L: sp.Expr, mech: Mechanics, part: Part):
     """Accelerations of the motion ``L`` (with the scene's forces) defines, compiled once."""
-    el = [e - Qi for e, Qi in zip(euler_lagrange(L, mech.s), mech.Q)]
-    rows = CompiledRows(el, mech.s.qdd, [*mech.s.q, *mech.s.qd, T, *mech.params,
+    rows = CompiledRows(mech.lagrange_rows(L), mech.s.qdd, [*mech.s.q, *mech.s.qd, T, *mech.params,
                                          *(sp.Symbol(s) for s in part.symbols)])
     return lambda q, qd, t, params, extra: rows.solve([*q, *qd, t, *params, *extra])
 
@@ -235,12 +233,11 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
 
     if c is not None and np.allclose(c, 1.0, rtol=1e-8, atol=0):
         proof, traj = _confirm(
-            ctx, lambda: proves_all_zero([a - b for a, b in zip(euler_lagrange(L_s, mech.s),
-                                                                 euler_lagrange(mech.L, mech.s))],
+            ctx, lambda: proves_all_zero([a - b for a, b in zip(mech.lagrange_rows(L_s), mech.EL)],
                                          ctx.symbolic_seconds, ctx.positive),
             lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
         args = [*mech.s.q, *mech.s.qd, T, *mech.params]
-        diff = compile_exprs([L_s - mech.L], args)(*pts.args(args))[0]
+        diff = evaluate([L_s - mech.L], args, pts.args(args))[0]
         constant = all(np.allclose(diff[g * per:(g + 1) * per], diff[g * per], rtol=1e-8,
                                    atol=1e-8 * scale_of(diff)) for g in range(groups))
         note = "" if np.allclose(diff, 0, atol=1e-9 * scale_of(diff)) else (
@@ -268,7 +265,7 @@ def _undetermined(L: sp.Expr, mech: Mechanics, pts) -> str | None:
     """The coordinate whose acceleration a Lagrangian leaves undetermined (singular kinetic matrix)."""
     args = [*mech.s.q, *mech.s.qd, T, *mech.params]
     n = len(mech.names)
-    hess = compile_exprs([sp.diff(L, a, b) for a in mech.s.qd for b in mech.s.qd], args)(*pts.args(args))
+    hess = evaluate([sp.diff(L, a, b) for a in mech.s.qd for b in mech.s.qd], args, pts.args(args))
     M = hess.reshape(n, n, -1).transpose(2, 0, 1)
     if not np.all(np.isfinite(M)):
         return None
@@ -443,15 +440,15 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
     extra = [sp.Symbol(s) for s in part.symbols]
     eq_exprs = [mech.parse(mech.system.equilibrium.get(name, "0")) for name in mech.names]
     pargs = [*mech.params, *extra]
-    q_star = compile_exprs(eq_exprs, [T, *pargs])(pts[T], *pts.args(pargs))
+    q_star = evaluate(eq_exprs, [T, *pargs], [pts[T], *pts.args(pargs)])
     state = [*mech.s.qdd, *mech.s.qd, *mech.s.q]
     args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *pargs]
     zeros = np.zeros((n, pts.K))
     at_eq = [*q_star, *zeros, *zeros, pts[T], *pts.args(pargs)]
 
     def linear_part(exprs):
-        jac = compile_exprs([sp.diff(e, v) for e in exprs for v in state], args)(*at_eq)
-        return jac.reshape(len(exprs), 3 * n, pts.K), compile_exprs(exprs, args)(*at_eq)
+        jac = evaluate([sp.diff(e, v) for e in exprs for v in state], args, at_eq)
+        return jac.reshape(len(exprs), 3 * n, pts.K), evaluate(exprs, args, at_eq)
 
     A_s, g0 = linear_part(rows)
     A_r, g0_r = linear_part(mech.EL)
@@ -476,7 +473,7 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
         rng = rng_for(ctx.problem.id, part.name, "nonlinear")
         dq = rng.uniform(0.2, 0.5, (3 * n, pts.K))
         displaced = [*(q_star + dq[2 * n:]), *dq[n:2 * n], *dq[:n], pts[T], *pts.args(pargs)]
-        g = compile_exprs(rows, args)(*displaced)
+        g = evaluate(rows, args, displaced)
         lin = np.einsum("msk,sk->mk", A_s, dq) + g0
         nonlinear = not np.allclose(g, lin, rtol=1e-6, atol=1e-9 * scale_of(g))
         note = ("These are the exact (nonlinear) equations; they linearize to the right small-oscillation "
@@ -513,7 +510,7 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
     pts, groups, per, (q, p, t, params) = _hamilton_points(ctx, mech, part)
     extra = [sp.Symbol(s) for s in part.symbols]
     args = [*mech.s.q, *mech.s.p, T, *mech.params, *extra]
-    h_s = compile_exprs([H_s], args)(*pts.args(args))[0]
+    h_s = evaluate([H_s], args, pts.args(args))[0]
     h_r = mech.hamiltonian(q, p, t, params)
     diff = h_s - h_r
     tol = 1e-8 * scale_of(h_s, h_r)
@@ -578,14 +575,14 @@ def _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, state) -> str:
     for mistake in part.mistakes:
         try:
             H_m = mech.parse(str(mistake.answer), [*part.symbols, *(str(x) for x in mech.s.p)])
-            if matches(compile_exprs([H_m], args)(*pts.args(args))[0]):
+            if matches(evaluate([H_m], args, pts.args(args))[0]):
                 return mistake.message
         except Exception:  # noqa: BLE001
             continue
     qd = mech.velocities(q, p, t, params)
     kin, pot = split_energy(mech.L, mech)
     h_r = mech.hamiltonian(q, p, t, params)
-    energy = compile_exprs([kin, pot], [*mech.s.q, *mech.s.qd, T, *mech.params])(*q, *qd, t, *params)
+    energy = evaluate([kin, pot], [*mech.s.q, *mech.s.qd, T, *mech.params], [*q, *qd, t, *params])
     T_, V_ = energy
     E = T_ + V_
     if not np.allclose(E, h_r, rtol=1e-8, atol=1e-8 * scale_of(h_r)) and matches(E):

@@ -6,7 +6,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.checkers.base import Context, InvalidAnswer, graded, key_name, read_sympy, as_expr
-from lagrade.numeric import compile_exprs
+from lagrade.numeric import evaluate
 from lagrade.reference import Mechanics, total_derivative
 from lagrade.result import PartResult
 from lagrade.sampling import rng_for, sample_points, with_reference_dynamics
@@ -38,8 +38,8 @@ def check_conserved(ctx: Context, part: Part, value: object) -> PartResult:
     argv = pts.args(args)
 
     def rate_and_grad(exprs):
-        rates = compile_exprs([total_derivative(e, mech.s) for e in exprs], args)(*argv)
-        grads = compile_exprs([sp.diff(e, v) for e in exprs for v in state], args)(*argv)
+        rates = evaluate([total_derivative(e, mech.s) for e in exprs], args, argv)
+        grads = evaluate([sp.diff(e, v) for e in exprs for v in state], args, argv)
         return rates, grads.reshape(len(exprs), len(state), pts.K)
 
     s_rate, s_grad = rate_and_grad(studs)
@@ -92,13 +92,13 @@ def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:
     # The state along the student's q(t), then each term of Lagrange's equations at that state:
     # the residual is their sum, and its scale the sum of their sizes (robust to exact cancellation).
     motion = [e for name in mech.names for e in (sol[name], sp.diff(sol[name], T), sp.diff(sol[name], T, 2))]
-    values = compile_exprs(motion, args)(*argv)
+    values = evaluate(motion, args, argv)
     state = dict(zip([v for trio in zip(mech.s.q, mech.s.qd, mech.s.qdd) for v in trio], values))
     state_args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, *args]
     state_argv = [*(state[v] for v in [*mech.s.q, *mech.s.qd, *mech.s.qdd]), *argv]
     res, scale = [], []
     for row in mech.EL:
-        terms = compile_exprs(list(sp.Add.make_args(sp.expand(row))), state_args)(*state_argv)
+        terms = evaluate(list(sp.Add.make_args(sp.expand(row))), state_args, state_argv)
         res.append(terms.sum(axis=0))
         scale.append(np.abs(terms).sum(axis=0))
     res, scale = np.array(res), np.array(scale)
@@ -111,8 +111,8 @@ def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:
         if name not in sol:
             continue
         have = sol[name] if key == name else sp.diff(sol[name], T)
-        a = compile_exprs([have.subs(T, 0)], args)(*argv)[0]
-        b = compile_exprs([want], args)(*argv)[0]
+        a = evaluate([have.subs(T, 0)], args, argv)[0]
+        b = evaluate([want], args, argv)[0]
         if not np.allclose(a, b, rtol=1e-8, atol=1e-10):
             notes.append(f"it does not meet the initial condition for {name}{chr(39) if key != name else ''}(0)")
     if notes:

@@ -12,7 +12,7 @@ import sympy as sp
 
 from lagrade.checkers.base import Context, InvalidAnswer, as_expr, graded, key_name, read_sympy, result
 from lagrade.compare.symbolic import _OutOfTime, proves_zero, time_bound
-from lagrade.numeric import agree, compile_exprs, scale_of
+from lagrade.numeric import agree, compile_exprs, evaluate, scale_of
 from lagrade.reference import Mechanics
 from lagrade.result import PartResult
 from lagrade.sampling import Points, rng_for, sample_points, with_reference_dynamics
@@ -52,7 +52,7 @@ def _evaluate(expr: sp.Expr, pts: Points, syms: list[sp.Symbol] | None = None) -
         for m in missing:
             pts.values[m] = rng.uniform(-1, 1, pts.K)
     syms = list(pts.values)
-    return compile_exprs([expr], syms)(*pts.args(syms))[0]
+    return evaluate([expr], syms, pts.args(syms))[0]
 
 
 def _symbolic_reference(ref: sp.Expr, mech: Mechanics, seconds: float) -> sp.Expr | None:

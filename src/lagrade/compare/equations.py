@@ -11,11 +11,12 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import sympy as sp
 
-from lagrade.numeric import compile_exprs, compile_linear_solve
+from lagrade.numeric import compile_exprs, compile_linear_solve, evaluate
 
 
 @dataclass
@@ -39,24 +40,36 @@ class RowAnalysis:
 
 
 class CompiledRows:
-    """Rows G(args, u) and their Jacobian in the unknowns u, compiled once."""
+    """Rows G(args, u) and their Jacobian in the unknowns u: evaluated once at the sampled states
+    without compiling (`lagrade.numeric.evaluate`), compiled only for what a trajectory calls many times."""
 
     def __init__(self, rows: Sequence[sp.Expr], unknowns: Sequence[sp.Symbol], args: Sequence[sp.Symbol]):
         self.m, self.n = len(rows), len(unknowns)
+        self.rows = list(rows)
         self.unknowns = list(unknowns)
-        allargs = [*args, *unknowns]
-        self.G = compile_exprs(list(rows), allargs)
-        self.J = compile_exprs([sp.diff(r, u) for r in rows for u in unknowns], allargs)
-        self.linear = all(sp.diff(r, u, v) == 0 for r in rows for u in unknowns for v in unknowns)
+        self.allargs = [*args, *unknowns]
+        self.J_exprs = [sp.diff(r, u) for r in rows for u in unknowns]
+        self.linear = all(sp.diff(j, v) == 0 for j in self.J_exprs for v in unknowns)
         self._direct = None
         if self.linear and self.m == self.n:
             zero = {u: 0 for u in unknowns}
-            A = [[sp.diff(r, u) for u in unknowns] for r in rows]
-            self._direct = compile_linear_solve(A, [-r.xreplace(zero) for r in rows], list(args))
+            A = [self.J_exprs[i * self.n:(i + 1) * self.n] for i in range(self.m)]
+            self._direct = compile_linear_solve(A, [-r.xreplace(zero) for r in self.rows], list(args))
+
+    @cached_property
+    def G(self):
+        return compile_exprs(self.rows, self.allargs)
+
+    @cached_property
+    def J(self):
+        return compile_exprs(self.J_exprs, self.allargs)
+
+    def values(self, argv: Sequence[np.ndarray], u: np.ndarray) -> np.ndarray:
+        return evaluate(self.rows, self.allargs, [*argv, *u])
 
     def jacobian(self, argv: Sequence[np.ndarray], u: np.ndarray) -> np.ndarray:
         K = np.broadcast(*argv).size
-        return self.J(*argv, *u).reshape(self.m, self.n, K)
+        return evaluate(self.J_exprs, self.allargs, [*argv, *u]).reshape(self.m, self.n, K)
 
     def solve(self, argv: Sequence[np.ndarray]) -> np.ndarray:
         """The rates these rows define (linear rows: one solve; otherwise two Newton steps)."""
@@ -65,7 +78,7 @@ class CompiledRows:
         K = np.broadcast(*argv).size
         u = np.zeros((self.n, K))
         for _ in range(1 if self.linear else 3):
-            J = self.jacobian(argv, u).transpose(2, 0, 1)
+            J = self.J(*argv, *u).reshape(self.m, self.n, K).transpose(2, 0, 1)
             g = self.G(*argv, *u).T[..., None]
             with np.errstate(all="ignore"):
                 try:
@@ -80,8 +93,8 @@ def analyse_rows(rows: CompiledRows, argv: Sequence[np.ndarray], truth: np.ndarr
                  rtol: float = 1e-7) -> RowAnalysis:
     """Which rows hold at the true rates, which are empty, and how many unknowns they fix."""
     zero = np.zeros_like(truth)
-    g_true = rows.G(*argv, *truth)
-    g_zero = rows.G(*argv, *zero)
+    g_true = rows.values(argv, truth)
+    g_zero = rows.values(argv, zero)
     J = rows.jacobian(argv, truth)  # (m, n, K)
     terms = np.abs(g_zero) + np.einsum("mnk,nk->mk", np.abs(J), np.abs(truth))
     scale = np.nanmax(np.where(np.isfinite(terms), terms, np.nan), axis=1, initial=0.0)
