@@ -101,3 +101,54 @@ def test_two_by_two_written_out_solves_any_well_conditioned_system(entries, b0, 
         return
     solve = compile_linear_solve([[a + 0 * x, c], [d, e]], [b0, b1], [x])
     assert np.allclose(solve(np.array([0.0]))[:, 0], np.linalg.solve(M, [b0, b1]), atol=1e-9)
+
+
+# --------------------------------------------------------------------------- evaluating without compiling
+
+from lagrade.numeric import evaluate  # noqa: E402
+
+
+def test_evaluate_matches_compiled_code_on_every_node_kind():
+    exprs = [sp.sin(x) * y**2 - 1 / x, sp.Piecewise((x, x > 0.5), (-y, True)),
+             (sp.exp(sp.I * x) + sp.exp(-sp.I * x)) / 2, sp.Abs(x - y) ** sp.Rational(3, 2), sp.atan2(y, x),
+             sp.Heaviside(x - 1), sp.Integer(3), sp.pi * x, sp.log(x, 2), sp.Max(x, y), sp.zoo * x,
+             x**-3, sp.sqrt(y), sp.cosh(x) * sp.tan(y), sp.sign(y) * sp.floor(3 * x)]
+    X, Y = np.linspace(0.1, 2, 7), np.linspace(-1, 1, 7)
+    a, b = evaluate(exprs, [x, y], [X, Y]), compile_exprs(exprs, [x, y])(X, Y)
+    assert a.shape == b.shape == (len(exprs), 7)
+    assert np.array_equal(np.isnan(a), np.isnan(b))
+    assert np.allclose(a[~np.isnan(a)], b[~np.isnan(b)], rtol=1e-12, atol=1e-12)
+
+
+def test_evaluate_falls_back_to_compiling_what_it_does_not_know():
+    f = sp.Function("f")
+    with pytest.raises(Exception):
+        evaluate([f(x)], [x], [np.ones(2)])
+    got = evaluate([sp.Mod(x, 1)], [x], [np.array([0.25, 1.5])])  # not in the walker's table
+    assert np.allclose(got[0], [0.25, 0.5])
+
+
+def _systems():
+    from lagrade.library import load_problem, problem_ids
+
+    for pid in problem_ids():
+        for system in load_problem(pid).systems:
+            yield pid, system.key
+
+
+@pytest.mark.parametrize("pid, key", list(_systems()))
+def test_evaluate_agrees_with_compiled_code_on_every_reference(pid, key):
+    from lagrade.grade import references
+    from lagrade.library import load_problem
+    from lagrade.sampling import rng_for, sample_points
+
+    problem = load_problem(pid)
+    mech = references(problem)[key]
+    args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, sp.Symbol("t"), *mech.params, *mech.multipliers]
+    exprs = [mech.L, *mech.EL, *mech.multiplier_exprs.values()]
+    pts = sample_points(mech, 9, rng_for("evaluate", pid, key))
+    values = [pts[a] if a in pts.values else np.linspace(0.5, 1.5, 9) for a in args]
+    a, b = evaluate(exprs, args, values), compile_exprs(exprs, args)(*values)
+    assert np.array_equal(np.isnan(a), np.isnan(b))
+    scale = np.maximum(1.0, np.abs(b))
+    assert np.all(np.abs(np.nan_to_num(a) - np.nan_to_num(b)) <= 1e-10 * scale)
