@@ -253,3 +253,24 @@ def test_latex_answer_scores_as_its_python_twin(path):
     assert latex.score == python.score == python.max_score
     assert {p.part: (p.verdict, p.score) for p in latex.parts} == \
         {p.part: (p.verdict, p.score) for p in python.parts}
+
+
+def _latex_goldens():
+    root = Path(__file__).resolve().parent / "answers"
+    return sorted(p for p in root.glob("*/*.toml") if "\\\\" in p.read_text() or "\\" in p.read_text())
+
+
+@pytest.mark.parametrize("path", _latex_goldens(), ids=lambda p: f"{p.parent.name}/{p.name}")
+def test_fast_sll_parse_reads_every_golden_latex_answer_as_the_full_parser_does(path, monkeypatch):
+    """The SLL-first parse is only a speed-up: on every LaTeX answer we have, it must give what the
+    full LL parser gives (values and problems alike)."""
+    from lagrade.answers import latex
+    from lagrade.answers.load import load_answer
+    from lagrade.library import load_problem
+
+    problem = load_problem(path.parent.name)
+    fast = load_answer(path, problem)
+    monkeypatch.setattr(latex, "_parse_sll", lambda text: (_ for _ in ()).throw(ValueError("off")))
+    full = load_answer(path, problem)
+    assert {k: str(v) for k, v in fast.values.items()} == {k: str(v) for k, v in full.values.items()}
+    assert [str(p) for p in fast.problems] == [str(p) for p in full.problems]
