@@ -25,12 +25,13 @@ import tempfile
 from functools import lru_cache
 from pathlib import Path
 
-import numpy as np
-import sympy as sp
+from typing import TYPE_CHECKING
 
 import lagrade
-from lagrade.reference import ReferenceCache
-from lagrade.spec import Problem
+
+if TYPE_CHECKING:  # the sandbox asks for cache_dir() before forking: no heavy imports at module level
+    from lagrade.reference import ReferenceCache
+    from lagrade.spec import Problem
 
 ENV = "LAGRADE_CACHE"
 _PACKAGE = Path(__file__).resolve().parent
@@ -50,6 +51,9 @@ def cache_dir() -> Path | None:
 @lru_cache(maxsize=1)
 def code_fingerprint() -> str:
     """lagrade's version and its source files as installed: an edit invalidates every entry."""
+    import numpy as np
+    import sympy as sp
+
     h = hashlib.sha256(f"{lagrade.__version__} {sys.version} {sp.__version__} {np.__version__}".encode())
     for path in sorted(_PACKAGE.rglob("*.py")):
         st = path.stat()
@@ -83,6 +87,8 @@ def _trusted(path: Path) -> bool:
 
 def load(problem: Problem) -> ReferenceCache | None:
     """The problem's derivations from disk, or None (no entry, stale, foreign or unreadable)."""
+    from lagrade.reference import ReferenceCache
+
     path = entry_path(problem)
     if path is None or not path.is_file() or not _trusted(path):
         return None

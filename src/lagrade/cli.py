@@ -163,8 +163,7 @@ def template(problem_id: str, problems_dir: tuple[Path, ...]) -> None:
 def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tuple[str, ...], hints: bool,
           credit_file: Path | None, plot_file: Path | None, problems_dir: tuple[Path, ...]) -> None:
     """Grade ANSWER (answer.py or answer.toml) for PROBLEM_ID."""
-    from lagrade.answers.load import load_answer
-    from lagrade.grade import grade_values
+    from lagrade.answers.load import start_loading
 
     try:
         p = _problem(problem_id, problems_dir)
@@ -181,7 +180,12 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
         credit = load_credit(credit_file) if credit_file else None
     except (ValueError, OSError) as exc:
         _fail(f"{credit_file}: {exc}", as_json)
-    loaded = load_answer(answer, p)
+    finish_loading = start_loading(answer, p)  # an answer.py runs in its sandbox child from here on
+    from lagrade.grade import grade_values  # meanwhile: the grader's own imports (two cores, two things)
+
+    if not as_json:
+        import rich.console  # noqa: F401
+    loaded = finish_loading()
     result = grade_values(p, loaded, accuracy, list(only) or None, hints=hints, credit=credit,
                           read_as=("latex",) if as_json else ("unicode",))
     if plot_file is not None:

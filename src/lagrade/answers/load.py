@@ -7,6 +7,7 @@ to the problem's part names, and a list of one-line problems naming the file and
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -44,45 +45,65 @@ class LoadedAnswer:
 
 def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
     """Read ``answer.py`` (sandboxed) or ``answer.toml`` (parsed) for ``problem``."""
+    return start_loading(path, problem, limits)()
+
+
+def start_loading(path: Path, problem: Problem, limits=None) -> Callable[[], LoadedAnswer]:
+    """Start reading an answer; the returned function finishes it. An ``answer.py`` runs in its
+    sandbox child meanwhile, so the caller can do other work (``lagrade check`` imports the grader)."""
     names = answer_names(problem)
     if not path.is_file():
         missing = AnswerProblem(file=str(path), line=None, message="no such answer file")
-        return LoadedAnswer(problems=[missing], fatal=missing)
-    out = LoadedAnswer()
+        return lambda: LoadedAnswer(problems=[missing], fatal=missing)
     if path.suffix == ".toml":
-        coords = sorted({c.name for s in problem.systems for c in s.coordinates})
-        # momenta are functions of t too, so that Derivative(p_q(t), t) reads in Hamilton's equations
-        functions = coords + [f"p_{c}" for c in coords]
-        known = sorted({p.name for s in problem.systems for p in problem.parameters_of(s.key)}) + \
-            [f"delta_{c}" for c in coords] + \
-            [s for part in problem.parts for s in part.symbols] + ["t"]
-        raw, problems = load_toml_answer(path, functions, known)
-        text = path.read_text(encoding="utf-8", errors="replace")
-        for prob in problems:
-            for name in names:
-                if prob.line is not None and _binds(text, prob.line, name):
-                    out.part_problems[names[name]] = prob
-        if any(prob.line is None for prob in problems):
-            out.fatal = next(prob for prob in problems if prob.line is None)
-        if not raw and problems:  # the file is not TOML at all: nothing in it can be graded
-            out.fatal, out.status = problems[0], "error"
-    elif path.suffix == ".py":
-        from lagrade.answers.sandbox import SandboxLimits, run_answer_file
+        return lambda: _load_toml(path, problem, names)
+    if path.suffix == ".py":
+        from lagrade.answers.sandbox import SandboxLimits, start_answer_file
 
-        outcome = run_answer_file(path, list(names), limits or SandboxLimits())
-        problems = list(outcome.problems)
-        out.status, out.stdout = outcome.status, outcome.stdout
-        if outcome.status != "ok" and problems:
-            out.fatal = problems[0]
-        raw = {}
-        for name, encoded in outcome.values.items():
-            try:
-                raw[name] = decode_value(encoded)
-            except RebuildError as exc:
-                problems.append(AnswerProblem(file=str(path), line=None, message=f"{name}: {exc}"))
-    else:
-        wrong = AnswerProblem(file=str(path), line=None, message="an answer file must be a .py or a .toml file")
-        return LoadedAnswer(problems=[wrong], fatal=wrong)
+        running = start_answer_file(path, list(names), limits or SandboxLimits())
+        return lambda: _finish_py(path, problem, names, running.wait())
+    wrong = AnswerProblem(file=str(path), line=None, message="an answer file must be a .py or a .toml file")
+    return lambda: LoadedAnswer(problems=[wrong], fatal=wrong)
+
+
+def _load_toml(path: Path, problem: Problem, names: dict[str, str]) -> LoadedAnswer:
+    out = LoadedAnswer()
+    coords = sorted({c.name for s in problem.systems for c in s.coordinates})
+    # momenta are functions of t too, so that Derivative(p_q(t), t) reads in Hamilton's equations
+    functions = coords + [f"p_{c}" for c in coords]
+    known = sorted({p.name for s in problem.systems for p in problem.parameters_of(s.key)}) + \
+        [f"delta_{c}" for c in coords] + \
+        [s for part in problem.parts for s in part.symbols] + ["t"]
+    raw, problems = load_toml_answer(path, functions, known)
+    text = path.read_text(encoding="utf-8", errors="replace")
+    for prob in problems:
+        for name in names:
+            if prob.line is not None and _binds(text, prob.line, name):
+                out.part_problems[names[name]] = prob
+    if any(prob.line is None for prob in problems):
+        out.fatal = next(prob for prob in problems if prob.line is None)
+    if not raw and problems:  # the file is not TOML at all: nothing in it can be graded
+        out.fatal, out.status = problems[0], "error"
+    return _bind(out, raw, problems, path, problem, names)
+
+
+def _finish_py(path: Path, problem: Problem, names: dict[str, str], outcome) -> LoadedAnswer:
+    out = LoadedAnswer()
+    problems = list(outcome.problems)
+    out.status, out.stdout = outcome.status, outcome.stdout
+    if outcome.status != "ok" and problems:
+        out.fatal = problems[0]
+    raw = {}
+    for name, encoded in outcome.values.items():
+        try:
+            raw[name] = decode_value(encoded)
+        except RebuildError as exc:
+            problems.append(AnswerProblem(file=str(path), line=None, message=f"{name}: {exc}"))
+    return _bind(out, raw, problems, path, problem, names)
+
+
+def _bind(out: LoadedAnswer, raw: dict, problems: list, path: Path, problem: Problem,
+          names: dict[str, str]) -> LoadedAnswer:
     out.problems = problems
     for name, value in raw.items():
         if name in names:

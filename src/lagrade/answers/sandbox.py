@@ -90,11 +90,34 @@ class _ChildReport(BaseModel):
 
 def run_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits = SandboxLimits()) -> SandboxOutcome:
     """Screen and run ``path``; return the values bound to the names in ``wanted``, as text."""
+    return start_answer_file(path, wanted, limits).wait()
+
+
+class RunningAnswer:
+    """An answer file running in its sandbox child (or already refused): ``wait()`` gives the outcome.
+
+    Starting it and waiting are separate so that a one-off check can import the grading code while
+    the child runs: two cores, two things at once."""
+
+    def __init__(self, outcome: SandboxOutcome | None = None, finish=None, workdir: str | None = None):
+        self._outcome, self._finish, self._workdir = outcome, finish, workdir
+
+    def wait(self) -> SandboxOutcome:
+        if self._outcome is None:
+            try:
+                self._outcome = self._finish()
+            finally:
+                shutil.rmtree(self._workdir, ignore_errors=True)
+        return self._outcome
+
+
+def start_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits = SandboxLimits()) -> RunningAnswer:
+    """Screen ``path`` and start it in a sandbox child; see `run_answer_file`."""
     path = Path(path)
     name = path.name
 
-    def fail(status: str, message: str, line: int | None = None) -> SandboxOutcome:
-        return SandboxOutcome(status=status, problems=[AnswerProblem(file=name, line=line, message=message)])
+    def fail(status: str, message: str, line: int | None = None) -> RunningAnswer:
+        return RunningAnswer(SandboxOutcome(status=status, problems=[AnswerProblem(file=name, line=line, message=message)]))
 
     try:
         if path.stat().st_size > MAX_SOURCE_BYTES:
@@ -107,14 +130,15 @@ def run_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits = S
     problems = screen_source(source, name)
     if problems:
         syntax = any(p.message.startswith(("syntax error", "cannot parse")) for p in problems)
-        return SandboxOutcome(status="error" if syntax else "rejected", problems=problems)
+        return RunningAnswer(SandboxOutcome(status="error" if syntax else "rejected", problems=problems))
 
     _prepare_parent()
     workdir = tempfile.mkdtemp(prefix="lagrade-answer-")
     try:
-        return _run_forked(source, path, list(wanted), limits, workdir)
-    finally:
+        return RunningAnswer(finish=_start_forked(source, path, list(wanted), limits, workdir), workdir=workdir)
+    except BaseException:
         shutil.rmtree(workdir, ignore_errors=True)
+        raise
 
 
 _prepared = False
@@ -138,7 +162,8 @@ def _prepare_parent() -> None:
     _prepared = True
 
 
-def _run_forked(source: str, path: Path, wanted: list[str], limits: SandboxLimits, workdir: str) -> SandboxOutcome:
+def _start_forked(source: str, path: Path, wanted: list[str], limits: SandboxLimits, workdir: str):
+    """Fork the child; return the function that collects its outcome."""
     name = path.name
     token = secrets.token_hex(16)  # a report without it was not written by our child code
     result_r, result_w = os.pipe()
@@ -150,8 +175,13 @@ def _run_forked(source: str, path: Path, wanted: list[str], limits: SandboxLimit
         _child_main(source, str(path), name, wanted, limits, workdir, result_w, out_w, token)
     os.close(result_w)
     os.close(out_w)
+    started = time.monotonic()
+    return lambda: _collect(pid, name, wanted, limits, token, result_r, out_r, started)
 
-    deadline = time.monotonic() + limits.wall_seconds
+
+def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, token: str, result_r: int, out_r: int,
+             started: float) -> SandboxOutcome:
+    deadline = started + limits.wall_seconds
     result, output = bytearray(), bytearray()
     timed_out = overflow = False
     with selectors.DefaultSelector() as sel:
