@@ -181,8 +181,13 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     except (ValueError, OSError) as exc:
         _fail(f"{credit_file}: {exc}", as_json)
     finish_loading = start_loading(answer, p)  # an answer.py runs in its sandbox child from here on
-    from lagrade.grade import grade_values  # meanwhile: the grader's own imports (two cores, two things)
+    # meanwhile (two cores, two things): the grader's imports, and the reference derivations (from
+    # the disk cache, or derived now)
+    from lagrade.grade import grade_values, references
 
+    refs = references(p)
+    for system in p.systems:
+        refs[system.key]
     if not as_json:
         import rich.console  # noqa: F401
     loaded = finish_loading()
