@@ -147,3 +147,18 @@ def test_cache_commands(tmp_path):
     assert "entries: 0" in run("info").stdout
     bad = run("build", "no-such-problem")
     assert bad.returncode == 1 and "no-such-problem: skipped" in bad.stderr
+
+
+def test_an_entry_replaces_the_stale_ones_of_its_problem(tmp_path, monkeypatch):
+    monkeypatch.setenv("LAGRADE_CACHE", str(tmp_path))
+    tmp_path.chmod(0o700)
+    problem = load_problem("12.43")
+    stale = tmp_path / "12.43-0123456789abcdef0123.pkl"
+    other = tmp_path / "12.4-0123456789abcdef0123.pkl"  # another problem whose id is a prefix
+    stale.write_bytes(b"old")
+    other.write_bytes(b"old")
+    refs = _warm(problem)
+    refs.saved_size = 0
+    assert cache.save(refs)
+    assert not stale.exists() and other.exists()
+    assert cache.entries(tmp_path) == sorted([cache.entry_path(problem), other])

@@ -16,6 +16,7 @@ and never fail. ``LAGRADE_CACHE=off`` turns it off; ``LAGRADE_CACHE=DIR`` moves 
 
 from __future__ import annotations
 
+import glob
 import hashlib
 import os
 import pickle
@@ -129,7 +130,17 @@ def save(refs: ReferenceCache) -> bool:
     except Exception:  # noqa: BLE001  (a read-only home or a full disk must not fail a check)
         return False
     refs.saved_size = refs.size()
+    _prune(path)
     return True
+
+
+def _prune(kept: Path) -> None:
+    """Entries of the same problem id made by another lagrade, sympy or problem version are never
+    read again: one entry per problem id stays, so the cache does not grow with every upgrade."""
+    prefix = kept.name.rsplit("-", 1)[0] + "-"
+    for other in kept.parent.glob(f"{glob.escape(prefix)}*.pkl"):
+        if other != kept and other.name.rsplit("-", 1)[0] + "-" == prefix:
+            other.unlink(missing_ok=True)
 
 
 def entries(directory: Path | None = None) -> list[Path]:
