@@ -349,28 +349,30 @@ def test_the_module_does_not_import_scipy():
     subprocess.run([sys.executable, "-c", code], check=True)
 
 
-def test_empty_interval_and_bad_t_eval():
+@pytest.mark.parametrize("integrator", [dop853, dop853_columns])
+def test_empty_interval_and_bad_t_eval(integrator):
     y0 = np.ones((2, 3))
-    r = dop853(oscillators(np.ones(3)), 1.0, y0, 1.0, rtol=1e-8, atol=1e-8, t_eval=np.array([1.0]))
+    r = integrator(oscillators(np.ones(3)), 1.0, y0, 1.0, rtol=1e-8, atol=1e-8, t_eval=np.array([1.0]))
     assert r.status == 0 and r.nfev == 0
     np.testing.assert_array_equal(r.y[:, :, 0], y0)
     with pytest.raises(ValueError):
-        dop853(oscillators(np.ones(3)), 0.0, y0, 1.0, rtol=1e-8, atol=1e-8, t_eval=np.array([0.5, 0.2]))
+        integrator(oscillators(np.ones(3)), 0.0, y0, 1.0, rtol=1e-8, atol=1e-8, t_eval=np.array([0.5, 0.2]))
 
 
 # ----------------------------------------------------------------------------- 6. property
 
 
+@pytest.mark.parametrize("integrator", [dop853, dop853_columns])
 @settings(max_examples=40, deadline=None)
 @given(a=st.lists(st.floats(-2.0, 1.0), min_size=1, max_size=8),
        scale=st.floats(0.1, 10.0),
        t_end=st.floats(0.1, 3.0))
-def test_linear_systems_match_exponential(a, scale, t_end):
+def test_linear_systems_match_exponential(integrator, a, scale, t_end):
     a = np.array(a)
     K = len(a)
     y0 = scale * np.vstack([np.linspace(1.0, 2.0, K), -np.linspace(0.5, 1.5, K)])
     t_eval = np.linspace(0.0, t_end, 7)
-    r = dop853(lambda t, Y: a * Y, 0.0, y0, t_end, rtol=1e-11, atol=1e-11, t_eval=t_eval)
+    r = integrator(lambda t, Y: a * Y, 0.0, y0, t_end, rtol=1e-11, atol=1e-11, t_eval=t_eval)
     assert r.status == 0
     exact = y0[:, :, None] * np.exp(a[None, :, None] * t_eval[None, None, :])
     assert np.all(np.abs(r.y - exact) <= 1e-8 * np.abs(exact))
@@ -771,30 +773,3 @@ def test_columns_max_evals_stops_with_a_message():
     assert r.nfev <= 200 and r.failed_column is not None
     ok = dop853_columns(fun, 0.0, y0, 1.0, rtol=1e-10, atol=1e-10, t_eval=np.array([1.0]), max_evals=10_000)
     assert ok.status == 0 and ok.nfev <= 10_000
-
-
-def test_columns_empty_interval_and_bad_t_eval():
-    y0 = np.ones((2, 3))
-    r = dop853_columns(oscillators(np.ones(3)), 1.0, y0, 1.0, rtol=1e-8, atol=1e-8, t_eval=np.array([1.0]))
-    assert r.status == 0 and r.nfev == 0
-    np.testing.assert_array_equal(r.y[:, :, 0], y0)
-    with pytest.raises(ValueError):
-        dop853_columns(oscillators(np.ones(3)), 0.0, y0, 1.0, rtol=1e-8, atol=1e-8, t_eval=np.array([0.5, 0.2]))
-
-
-# ----------------------------------------------------------------------------- C6. property
-
-
-@settings(max_examples=40, deadline=None)
-@given(a=st.lists(st.floats(-2.0, 1.0), min_size=1, max_size=8),
-       scale=st.floats(0.1, 10.0),
-       t_end=st.floats(0.1, 3.0))
-def test_columns_linear_systems_match_exponential(a, scale, t_end):
-    a = np.array(a)
-    K = len(a)
-    y0 = scale * np.vstack([np.linspace(1.0, 2.0, K), -np.linspace(0.5, 1.5, K)])
-    t_eval = np.linspace(0.0, t_end, 7)
-    r = dop853_columns(lambda t, Y: a * Y, 0.0, y0, t_end, rtol=1e-11, atol=1e-11, t_eval=t_eval)
-    assert r.status == 0
-    exact = y0[:, :, None] * np.exp(a[None, :, None] * t_eval[None, None, :])
-    assert np.all(np.abs(r.y - exact) <= 1e-8 * np.abs(exact))
