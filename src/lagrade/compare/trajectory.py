@@ -1,8 +1,8 @@
 """Trajectory evidence: integrate the student's and the reference dynamics side by side.
 
 Both systems start from the same sampled states with the same parameter values; all K
-trajectories are integrated as one batched system (one `solve_ivp` call per side and segment), then
-compared in the tolerance-scaled norm ``|y - y_ref| / (atol + rtol*|y_ref|)``. For a wrong answer the
+trajectories are integrated as one batched system by lagrade's own DOP853 (`compare/dop853.py`:
+pure numpy, each trajectory with its own step size), then compared in the tolerance-scaled norm ``|y - y_ref| / (atol + rtol*|y_ref|)``. For a wrong answer the
 comparison says when the motions separate and which coordinate goes wrong first.
 
 What keeps this honest on hard scenes (measurements and reasons: docs/numerics.md):
@@ -10,7 +10,7 @@ What keeps this honest on hard scenes (measurements and reasons: docs/numerics.m
 - **stiffness**: before integrating, the spectrum of the Jacobian is estimated at the initial states
   (dim+1 batched evaluations, finite differences of each trajectory's own block). A scene whose fastest
   rate times the horizon exceeds ``Accuracy.stiff_index`` is stiff. Decay-dominated stiffness is
-  integrated with LSODA (implicit BDF there) given the batched block-diagonal Jacobian; a fast
+  integrated with scipy's LSODA (implicit BDF there) given the batched block-diagonal Jacobian; a fast
   oscillation has to be resolved by any method, and there DOP853 is measured cheapest, so the grader
   keeps it and bounds the cost instead: when the budget ``max_rhs_evals`` cannot cover the horizon
   (about 40 evaluations per radian of the fastest mode at rtol 1e-10), the comparison window is
@@ -318,12 +318,13 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
                 out.append(g)
         return out
 
-    def batched_events() -> list[tuple[BatchedEvent, Event]]:
+    def watched() -> list[tuple[BatchedEvent, np.ndarray]]:
+        """Each event with the trajectories it watches now (alive, and active for it)."""
         out = []
         for ev in events:
             act = alive & (ev.active() if ev.active is not None else True)
             if act.any():
-                out.append((ev, Event(ev.fn, ev.direction, act)))
+                out.append((ev, act))
         return out
 
     def columns(t0: float, y: np.ndarray, times: np.ndarray):
@@ -342,11 +343,7 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
                 return True
             return on_event
 
-        evs = []
-        for ev in events:
-            act = alive & (ev.active() if ev.active is not None else True)
-            if act.any():
-                evs.append(ColumnEvent(ev.fn, ev.direction, act, stop(ev)))
+        evs = [ColumnEvent(ev.fn, ev.direction, act, stop(ev)) for ev, act in watched()]
         res = dop853_columns(lambda t, Y: fun(t, Y.reshape(-1)).reshape(dim, K), t0, y.reshape(dim, K), horizon,
                              rtol=acc.rtol, atol=acc.atol, t_eval=times, events=evs)
         if res.status == -1:
@@ -359,7 +356,7 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
         if method == "DOP853" and all(ev.action == "stop" for ev in events):
             return columns(t0, y, times)
         if method == "DOP853":  # switching events: one shared step, the batch restarts at each switch
-            evs = batched_events()
+            evs = [(ev, Event(ev.fn, ev.direction, act)) for ev, act in watched()]
             res = dop853(lambda t, Y: fun(t, Y.reshape(-1)).reshape(dim, K), t0, y.reshape(dim, K), horizon,
                          rtol=acc.rtol, atol=acc.atol, t_eval=times, events=[e for _, e in evs])
             if res.status == -1:
@@ -574,7 +571,7 @@ def _reference_run(reference: Rates, y0: np.ndarray, horizon: float, acc: Accura
         why = stiff.describe() + (f", window shortened to fit {acc.max_rhs_evals} evaluations" if window < horizon else "")
     amp = None
     if chaos and not events:
-        # the displaced copies double the batch: cheaper than a second call, and still one solve_ivp
+        # the displaced copies double the batch: cheaper than a second integration
         def pair_rates(t: float, Y: np.ndarray) -> np.ndarray:
             t1, t2 = (t, t) if np.ndim(t) == 0 else (t[:K], t[K:])  # each trajectory may have its own time
             return np.concatenate([reference(t1, Y[:, :K]), reference(t2, Y[:, K:])], axis=1)
