@@ -23,8 +23,8 @@ What keeps this honest on hard scenes (measurements and reasons: docs/numerics.m
   that reaches a tenth of the comparison tolerance, so a correct answer written differently is never
   rejected by amplified rounding; a wrong answer still separates at once.
 - **events**: `integrate` takes batched event functions; each trajectory stops (is frozen) at its own
-  event (contact loss), or the integration restarts on a new branch (sign change of a friction force),
-  in segments of the same batched solve.
+  event (contact loss) while the others go on; with switching events (sign change of a friction
+  force) the batch shares one step and restarts on the new branch, in segments.
 - **singularities**: if the rates of a trajectory grow a millionfold (a coordinate singularity such as
   theta -> 0 of a spherical pendulum, or a collision), the run stops and says where, instead of
   returning a silently wrong motion.
