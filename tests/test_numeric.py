@@ -30,13 +30,13 @@ import sympy as sp  # noqa: E402
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from lagrade.numeric import Generated, compile_exprs, compile_linear_solve  # noqa: E402
+from lagrade.numeric import Generated, compile_exprs, compile_linear_solve, compile_numpy  # noqa: E402
 
 x, y, z = sp.symbols("x y z")
 
 
 def test_compiled_rows_broadcast_constants_and_match_sympy():
-    f = compile_exprs([sp.sin(x) * y + sp.sqrt(z), sp.Integer(3), x**2 / (1 + y**2)], [x, y, z])
+    f = compile_numpy([sp.sin(x) * y + sp.sqrt(z), sp.Integer(3), x**2 / (1 + y**2)], [x, y, z])
     assert isinstance(f, Generated)
     X, Y, Z = np.array([0.1, 0.2]), np.array([1.0, -2.0]), np.array([4.0, 9.0])
     got = f(X, Y, Z)
@@ -48,7 +48,7 @@ def test_compiled_rows_broadcast_constants_and_match_sympy():
 
 
 def test_compiled_function_pickles_as_its_source():
-    f = compile_exprs([sp.cos(x) - y], [x, y])
+    f = compile_numpy([sp.cos(x) - y], [x, y])
     g = pickle.loads(pickle.dumps(f))
     assert g.source == f.source
     assert np.allclose(g(np.array([0.0, np.pi]), np.array([1.0, 1.0])), [[0.0, -2.0]])
@@ -114,7 +114,7 @@ def test_evaluate_matches_compiled_code_on_every_node_kind():
              sp.Heaviside(x - 1), sp.Integer(3), sp.pi * x, sp.log(x, 2), sp.Max(x, y), sp.zoo * x,
              x**-3, sp.sqrt(y), sp.cosh(x) * sp.tan(y), sp.sign(y) * sp.floor(3 * x)]
     X, Y = np.linspace(0.1, 2, 7), np.linspace(-1, 1, 7)
-    a, b = evaluate(exprs, [x, y], [X, Y]), compile_exprs(exprs, [x, y])(X, Y)
+    a, b = evaluate(exprs, [x, y], [X, Y]), compile_numpy(exprs, [x, y])(X, Y)
     assert a.shape == b.shape == (len(exprs), 7)
     assert np.array_equal(np.isnan(a), np.isnan(b))
     assert np.allclose(a[~np.isnan(a)], b[~np.isnan(b)], rtol=1e-12, atol=1e-12)

@@ -1,8 +1,10 @@
-"""Compiling expressions to vectorized numpy functions.
+"""Compiling expressions to vectorized functions of whole batches of points.
 
 Evaluating at many random points is the grader's first and cheapest evidence, and the same
 compiled functions drive the trajectory integrations, so every expression is compiled once,
-with common-subexpression elimination, and evaluated on whole arrays of points at a time.
+with common-subexpression elimination, and evaluated on whole arrays of points at a time:
+as machine code where llvmlite is installed (:mod:`lagrade.native`), else as numpy code.
+Evidence used once is evaluated without compiling (`evaluate`).
 """
 
 from __future__ import annotations
@@ -12,6 +14,8 @@ from collections.abc import Callable, Sequence
 import numpy as np
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
+
+from lagrade.native import compile_native
 
 Vectorized = Callable[..., np.ndarray]
 
@@ -25,8 +29,7 @@ def compile_exprs(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vector
 
     Memoized: the reference side of a problem compiles the same expressions for every answer, and
     in a bulk run that is most of the compiling (lambdify costs milliseconds per expression)."""
-    exprs = [sp.sympify(e) for e in exprs]
-    exprs = [e.xreplace({sp.zoo: sp.nan}) if e.has(sp.zoo) else e for e in exprs]  # undefined: NaN, as numpy
+    exprs = _defined(exprs)
     key = (tuple(exprs), tuple(args))
     hit = _COMPILED.get(key)
     if hit is not None:
@@ -40,10 +43,23 @@ def compile_exprs(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vector
 def _compile(exprs: list[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
     if not exprs:
         return _Empty()
+    return compile_native(exprs, args) or compile_numpy(exprs, args)
+
+
+def compile_numpy(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
+    """The numpy form of `compile_exprs` (not memoized): where llvmlite is missing or cannot write
+    an expression (complex intermediates, functions outside its vocabulary)."""
+    exprs = _defined(exprs)
     try:
         return Generated(_generate(exprs, args), len(exprs))
     except Exception:  # noqa: BLE001  (an expression the numpy printer cannot write: lambdify's way)
         return _lambdified(exprs, args)
+
+
+def _defined(exprs: Sequence[sp.Expr]) -> list[sp.Expr]:
+    """Sympified, with complex infinity (1/0 in sympy) as NaN: undefined, as numpy has it."""
+    exprs = [sp.sympify(e) for e in exprs]
+    return [e.xreplace({sp.zoo: sp.nan}) if e.has(sp.zoo) else e for e in exprs]
 
 
 class _Empty:
