@@ -10,7 +10,8 @@ to the ratio. Three comparisons:
    the compiled right-hand side covers all K states) against the plain way: lambdify the closed-form
    accelerations once and call ``scipy.integrate.solve_ivp(method="DOP853")`` once per trajectory.
 2. **Right-hand side per evaluation** (target: lagrade <= 3x numba). ``mech.accelerations`` (the
-   generated straight-line numpy code) on a batch of K states against an ``@njit`` loop over the K
+   compiled accelerations: machine code through llvmlite, ``lagrade.native``, or numpy code where
+   llvmlite is missing; the header says which) on a batch of K states against an ``@njit`` loop over the K
    columns that evaluates the same closed-form accelerations (lambdified with ``cse=True``, compiled
    by numba once before timing) into a preallocated output.
 3. **Time to accuracy against PyDy** (target: lagrade needs less time). The same pendulum built with
@@ -53,6 +54,7 @@ from scipy.integrate import solve_ivp
 from lagrade.compare.trajectory import ACCURACY, integrate
 from lagrade.grade import references
 from lagrade.library import load_problem
+from lagrade.native import backend
 from lagrade.sampling import rng_for, sample_points, state_arrays
 
 PROBLEM = "12.14"
@@ -137,6 +139,7 @@ def lambdified(mech):
 
 def header(args) -> None:
     versions = f"numpy {np.__version__}, scipy {scipy.__version__}, sympy {sp.__version__}"
+    versions += f"; lagrade compiles with {backend()}"
     versions += f", numba {numba.__version__}" if numba else ", numba not installed"
     versions += f", pydy {pydy.__version__}" if pydy else ", pydy not installed"
     load = ", ".join(f"{x:.2f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") else "n/a"
@@ -195,7 +198,7 @@ def numba_kernel(mech):
 
 
 def rhs_per_evaluation(mech, Ks, repeats: int, calls: int) -> None:
-    print(f"\n2. Right-hand side per evaluation of a batch of K states: mech.accelerations (generated numpy) "
+    print(f"\n2. Right-hand side per evaluation of a batch of K states: mech.accelerations ({backend()}) "
           f"vs a numba @njit loop over the same expressions; {calls} calls per repeat. "
           "Target: lagrade <= 3x numba.")
     if numba is None:

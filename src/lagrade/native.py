@@ -316,6 +316,32 @@ class Native:
         fn(src_at, out_at, size)
         return out.copy()
 
+    def blocks(self, *blocks: np.ndarray) -> np.ndarray:
+        """The same, the arguments given as blocks of consecutive rows, each ``(rows, *shape)`` or
+        ``(rows, 1)``: q, q', t and the parameters of a batch in four copies instead of one per
+        argument (see `lagrade.numeric.call_blocks`)."""
+        fn = self._fn or self._build()
+        shape = blocks[0].shape[1:]
+        for b in blocks:
+            s = b.shape[1:]
+            if s != shape and s != (1,):
+                shape = np.broadcast_shapes(*(b.shape[1:] for b in blocks))
+                break
+        kept = getattr(self._scratch, "kept", None)
+        if kept is None or kept[0] != shape:
+            src, out = np.empty((self.nargs, *shape)), np.empty((self.count, *shape))
+            kept = self._scratch.kept = (shape, src, out, src.ctypes.data, out.ctypes.data, math.prod(shape))
+        _, src, out, src_at, out_at, size = kept
+        row = 0
+        for b in blocks:
+            end = row + b.shape[0]
+            src[row:end] = b
+            row = end
+        if row != self.nargs:
+            raise ValueError(f"{row} arguments given in blocks, {self.nargs} expected")
+        fn(src_at, out_at, size)
+        return out.copy()
+
     def __reduce__(self):
         return Native, (self.ir_text, self.count, self.nargs)
 

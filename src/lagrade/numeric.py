@@ -56,6 +56,19 @@ def compile_numpy(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vector
         return _lambdified(exprs, args)
 
 
+def call_blocks(f: Vectorized, *blocks: np.ndarray) -> np.ndarray:
+    """``f(*args)`` with the arguments given as blocks of consecutive rows, each ``(rows, *shape)``
+    or ``(rows, 1)`` for a constant per row: a right-hand side's q, q', t and parameters.
+
+    Unpacking a batch into one array per argument costs a few microseconds per call, as much as
+    machine code takes for the whole right-hand side; `lagrade.native.Native.blocks` copies each
+    block once instead."""
+    fast = getattr(f, "blocks", None)
+    if fast is not None:
+        return fast(*blocks)
+    return f(*(row for b in blocks for row in b))
+
+
 def _defined(exprs: Sequence[sp.Expr]) -> list[sp.Expr]:
     """Sympified, with complex infinity (1/0 in sympy) as NaN: undefined, as numpy has it."""
     exprs = [sp.sympify(e) for e in exprs]

@@ -15,7 +15,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.answers.text import parse_math
-from lagrade.numeric import Vectorized, compile_exprs, compile_linear_solve
+from lagrade.numeric import Vectorized, call_blocks, compile_exprs, compile_linear_solve
 from lagrade.spec import Problem, System
 from lagrade.symbols import T, StateSymbols, to_state
 
@@ -148,8 +148,9 @@ class Mechanics:
         return compile_linear_solve([list(self.mass.row(i)) for i in range(n)], list(self.force), self.args)
 
     def accelerations(self, q: np.ndarray, qd: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
-        """qdd for a batch of states: shapes (n, K) -> (n, K)."""
-        return self._accelerations_f(*q, *qd, t, *params)
+        """qdd for a batch of states: shapes (n, K) -> (n, K); t a number or (K,), params (P,) or (P, K)."""
+        return call_blocks(self._accelerations_f, q, qd, np.reshape(t, (1, -1)),
+                           params if np.ndim(params) == 2 else np.reshape(params, (-1, 1)))
 
     @cached_property
     def _momentum_f(self) -> Vectorized:
