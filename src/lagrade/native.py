@@ -3,11 +3,11 @@
 A trajectory run calls its right-hand side about 800 times on a batch of a few states. In numpy
 each of the few dozen operations in a double pendulum's accelerations costs a microsecond of
 call overhead whatever the batch size, so the arithmetic itself is noise: one evaluation costs
-about 30 us, a numba-compiled one about 1 us. numba takes a second to import and hundreds of
-milliseconds to compile each function, far more than the whole check it would speed up. llvmlite
-(numba's own LLVM binding) imports in about 50 ms and turns the straight-line code printed here
-into machine code in a few milliseconds, which a student's equations of motion repay within one
-trajectory.
+about 25 us, a numba-compiled one under 1 us. numba takes about a second to import and hundreds of
+milliseconds to compile each function, more than a whole check. llvmlite (numba's own LLVM
+binding) loads in about 20 ms, and its ORC JIT turns the straight-line IR printed here into
+machine code in about a millisecond, which a student's equations of motion repay within one
+trajectory run.
 
 What is compiled: one function ``f(double *in, double *out, int64 K)`` that loops over the K
 columns of ``in`` (one row per argument) and writes each expression into a row of ``out``, with
@@ -21,8 +21,10 @@ from __future__ import annotations
 
 import ctypes
 import functools
+import itertools
 import math
 import os
+import sys
 import threading
 from collections.abc import Sequence
 
@@ -269,13 +271,50 @@ def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol]) -> str:
 # GIL back would cost as much as the arithmetic
 _SIGNATURE = ctypes.PYFUNCTYPE(None, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int64)
 
+#: Functions linked into one ORC JIT before the next goes to a new one. A JIT keeps about 20 kB for
+#: every library ever linked into it, freed or not, and is itself freed with its last function: a
+#: bulk run compiles a few functions per answer, and its memory must not grow with the class.
+_LIBRARIES_PER_JIT = 128
+_jit_lock = threading.Lock()
+_jit: list = []  # [LLJIT, libraries linked into it]
+_library_names = itertools.count()
+
+
+class _Library:
+    """One linked function: its machine code lives as long as this object, and the JIT it was
+    linked into at least as long (a JIT freed before its libraries takes them down with it)."""
+
+    __slots__ = ("address", "jit", "tracker")
+
+    def __init__(self, ir_text: str):
+        from llvmlite.binding.orcjit import JITLibraryBuilder
+
+        _, binding, target = _llvm()
+        with _jit_lock:
+            if not _jit or _jit[1] >= _LIBRARIES_PER_JIT:
+                # code generation at -O0 takes 1 ms for a double pendulum's accelerations, at -O2
+                # 6 ms, for code 0-7% slower at the grader's 4-64 states per call (20% at 1024): the
+                # grader compiles each student's equations once for a few hundred calls
+                _jit[:] = [binding.create_lljit_compiler(target.create_target_machine(opt=0)), 0]
+            self.jit = _jit[0]
+            _jit[1] += 1
+            name = f"lagrade{next(_library_names)}"
+            self.tracker = (JITLibraryBuilder().add_ir(ir_text).add_current_process()
+                            .export_symbol("lagrade_fill").link(self.jit, name))
+        self.address = self.tracker["lagrade_fill"]
+
+    def __del__(self):
+        tracker = getattr(self, "tracker", None)
+        if tracker is not None and not sys.is_finalizing():  # at exit, the process frees it all
+            tracker.close()  # before the reference to the JIT goes
+
 
 class Native:
     """A compiled batch function with the calling convention of `lagrade.numeric.Generated`:
     ``f(*arrays) -> ndarray (count, *shape)``, arrays and scalars broadcasting together.
 
     It pickles as its IR, since machine code addresses do not survive a process, and is compiled
-    again on its first call after loading (a few milliseconds): a reference loaded from the disk
+    again on its first call after loading (about a millisecond): a reference loaded from the disk
     cache pays only for the functions its check actually calls."""
 
     def __init__(self, ir_text: str, count: int, nargs: int):
@@ -284,16 +323,8 @@ class Native:
         self._scratch = threading.local()  # per thread: buffers filled and read around one call
 
     def _build(self):
-        _, binding, target = _llvm()
-        module = binding.parse_assembly(self.ir_text)
-        module.verify()
-        # The engine owns the module, the target machine (one each: it frees them) and the machine
-        # code. Code generation at -O0 takes 2 ms for a double pendulum's accelerations, at -O2 8 ms,
-        # for code 0-7% slower at the grader's 4-64 states per call (20% at 1024): the grader compiles
-        # each student's equations once and integrates them for a few hundred calls.
-        self._engine = binding.create_mcjit_compiler(module, target.create_target_machine(opt=0))
-        self._engine.finalize_object()
-        self._fn = _SIGNATURE(self._engine.get_function_address("lagrade_fill"))
+        self._library = _Library(self.ir_text)
+        self._fn = _SIGNATURE(self._library.address)
         return self._fn
 
     def __call__(self, *arrays: np.ndarray) -> np.ndarray:
@@ -357,8 +388,10 @@ def compile_native(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Nativ
     if any(e.has(sp.I) for e in exprs):
         return None
     try:
-        made = Native(_module_ir(exprs, list(args)), len(exprs), len(args))
-        made._build()  # a code-generation error surfaces here, where numpy code can take over
+        text = _module_ir(exprs, list(args))
     except _Unsupported:
         return None
+    _llvm()[1].parse_assembly(text).verify()  # LLVM aborts on malformed IR: find out here, loudly
+    made = Native(text, len(exprs), len(args))
+    made._build()
     return made

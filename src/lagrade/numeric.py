@@ -21,7 +21,10 @@ Vectorized = Callable[..., np.ndarray]
 
 
 _COMPILED: dict[tuple, Vectorized] = {}
-_COMPILED_MAX = 2048
+#: Least recently used entries go first: a bulk run compiles the reference's functions once and
+#: reuses them for every answer, while each answer's own (a few tens of kB of machine code each)
+#: are used for that answer only.
+_COMPILED_MAX = 256
 
 
 def compile_exprs(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
@@ -31,8 +34,9 @@ def compile_exprs(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vector
     in a bulk run that is most of the compiling (lambdify costs milliseconds per expression)."""
     exprs = _defined(exprs)
     key = (tuple(exprs), tuple(args))
-    hit = _COMPILED.get(key)
+    hit = _COMPILED.pop(key, None)
     if hit is not None:
+        _COMPILED[key] = hit  # the most recently used again
         return hit
     if len(_COMPILED) >= _COMPILED_MAX:
         _COMPILED.pop(next(iter(_COMPILED)))
