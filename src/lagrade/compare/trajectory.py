@@ -265,14 +265,15 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
         if stopped:
             out = out * alive
         if guard:
-            size = np.abs(out).max(axis=0)
             if limit is None:
-                limit = SINGULAR_GROWTH * (1.0 + size)
+                limit = SINGULAR_GROWTH * (1.0 + np.abs(out).max(axis=0))
                 lowest = float(limit.min())
-            elif size.max() > lowest and np.any(size > limit):
-                k = int(np.argmax(size / limit))
-                raise _Singular(float(np.max(t)) if np.ndim(t) else t, k,
-                                float(size[k] / limit[k] * SINGULAR_GROWTH))
+            elif np.abs(out).max() > lowest:  # one reduction per call; per trajectory only then
+                size = np.abs(out).max(axis=0)
+                if np.any(size > limit):
+                    k = int(np.argmax(size / limit))
+                    raise _Singular(float(np.max(t)) if np.ndim(t) else t, k,
+                                    float(size[k] / limit[k] * SINGULAR_GROWTH))
         return out.reshape(-1)
 
     jac_fn = None
