@@ -174,3 +174,32 @@ def test_any_expression_agrees_with_numpy(exprs):
     got, want = made(X, Y), compile_numpy(exprs, [x, y])(X, Y)
     assert np.array_equal(np.isnan(got), np.isnan(want))
     assert np.allclose(got, want, rtol=1e-12, atol=1e-300, equal_nan=True)
+
+
+# ------------------------------------------------------------------------------- memory stays bounded
+
+
+def test_a_jit_is_freed_with_its_last_function_so_bulk_memory_stays_flat():
+    import gc
+    import weakref
+
+    native._jit.clear()  # the next function starts a JIT of its own (others may hold the current one)
+    first = native.compile_native([x + 0.5], [x])
+    jit = weakref.ref(first._library.jit)
+    made = [native.compile_native([x + i], [x]) for i in range(native._LIBRARIES_PER_JIT + 1)]
+    assert made[-1]._library.jit is not jit()  # a full JIT is not linked into any more
+    assert np.allclose(first(np.array([1.0])), [[1.5]])  # and what it holds still works
+    del first, made
+    gc.collect()
+    assert jit() is None
+
+
+def test_the_memo_of_compiled_functions_keeps_the_most_recently_used():
+    from lagrade import numeric
+
+    reference = [sp.sin(x) * y]
+    kept = compile_exprs(reference, [x, y])
+    for i in range(numeric._COMPILED_MAX + 50):  # a class's worth of answers, each its own expression
+        compile_exprs([sp.cos(x) + i * y], [x, y])
+        assert compile_exprs(reference, [x, y]) is kept  # used for every answer: never evicted
+    assert len(numeric._COMPILED) <= numeric._COMPILED_MAX

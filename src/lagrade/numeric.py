@@ -73,6 +73,12 @@ def call_blocks(f: Vectorized, *blocks: np.ndarray) -> np.ndarray:
     return f(*(row for b in blocks for row in b))
 
 
+def as_row(x: np.ndarray | float) -> np.ndarray:
+    """``x`` as a block of one row for `call_blocks`: (K,) -> (1, K), a number -> (1, 1). A method
+    call, not ``np.reshape`` (which costs a microsecond per right-hand side call)."""
+    return x.reshape(1, -1) if isinstance(x, np.ndarray) else np.full((1, 1), x, dtype=float)
+
+
 def _defined(exprs: Sequence[sp.Expr]) -> list[sp.Expr]:
     """Sympified, with complex infinity (1/0 in sympy) as NaN: undefined, as numpy has it."""
     exprs = [sp.sympify(e) for e in exprs]

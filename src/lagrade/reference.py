@@ -15,7 +15,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.answers.text import parse_math
-from lagrade.numeric import Vectorized, call_blocks, compile_exprs, compile_linear_solve
+from lagrade.numeric import Vectorized, as_row, call_blocks, compile_exprs, compile_linear_solve
 from lagrade.spec import Problem, System
 from lagrade.symbols import T, StateSymbols, to_state
 
@@ -149,8 +149,9 @@ class Mechanics:
 
     def accelerations(self, q: np.ndarray, qd: np.ndarray, t: np.ndarray, params: np.ndarray) -> np.ndarray:
         """qdd for a batch of states: shapes (n, K) -> (n, K); t a number or (K,), params (P,) or (P, K)."""
-        return call_blocks(self._accelerations_f, q, qd, np.reshape(t, (1, -1)),
-                           params if np.ndim(params) == 2 else np.reshape(params, (-1, 1)))
+        params = np.asarray(params, dtype=float)
+        return call_blocks(self._accelerations_f, q, qd, as_row(t),
+                           params if params.ndim == 2 else params.reshape(-1, 1))
 
     @cached_property
     def _momentum_f(self) -> Vectorized:

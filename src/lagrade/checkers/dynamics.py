@@ -18,7 +18,7 @@ from lagrade.checkers.base import Context, InvalidAnswer, equation_rows, graded,
 from lagrade.compare.equations import CompiledRows, analyse_rows
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs
-from lagrade.numeric import agree, compile_exprs, evaluate, scale_of
+from lagrade.numeric import agree, as_row, compile_exprs, evaluate, scale_of
 from lagrade.reference import Mechanics
 from lagrade.result import PartResult
 from lagrade.sampling import rng_for, sample_points, state_arrays, with_reference_dynamics
@@ -195,7 +195,7 @@ def _lagrange_solver(L: sp.Expr, mech: Mechanics, part: Part):
     """Accelerations of the motion ``L`` (with the scene's forces) defines, compiled once."""
     rows = CompiledRows(mech.lagrange_rows(L), mech.s.qdd, [*mech.s.q, *mech.s.qd, T, *mech.params,
                                          *(sp.Symbol(s) for s in part.symbols)])
-    return lambda q, qd, t, params, extra: rows.solve_blocks(q, qd, np.reshape(t, (1, -1)), params, extra)
+    return lambda q, qd, t, params, extra: rows.solve_blocks(q, qd, as_row(t), params, extra)
 
 
 def reduce_by_constraints(expr: sp.Expr, mech: Mechanics) -> sp.Expr:
@@ -366,7 +366,7 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     an = analyse_rows(compiled, pts.args(args), truth, list(mech.names))
 
     def student_acc(q, qd, t, params, extra_v):
-        return compiled.solve_blocks(q, qd, np.reshape(t, (1, -1)), params, extra_v)
+        return compiled.solve_blocks(q, qd, as_row(t), params, extra_v)
 
     if an.fraction >= 1.0:
         proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
@@ -621,7 +621,7 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
     an = analyse_rows(compiled, pts.args(args), truth, labels)
 
     def student_rates(q_, p_, t_, params_, extra_v):
-        return compiled.solve_blocks(q_, p_, np.reshape(t_, (1, -1)), params_, extra_v)
+        return compiled.solve_blocks(q_, p_, as_row(t_), params_, extra_v)
 
     if an.fraction >= 1.0:
         traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
