@@ -327,6 +327,14 @@ class Native:
         self._fn = _SIGNATURE(self._library.address)
         return self._fn
 
+    def _buffers(self, shape: tuple) -> tuple:
+        """This thread's (shape, in, out, their addresses, columns) for a batch of this shape."""
+        kept = getattr(self._scratch, "kept", None)
+        if kept is None or kept[0] != shape:
+            src, out = np.empty((self.nargs, *shape)), np.empty((self.count, *shape))
+            kept = self._scratch.kept = (shape, src, out, src.ctypes.data, out.ctypes.data, math.prod(shape))
+        return kept
+
     def __call__(self, *arrays: np.ndarray) -> np.ndarray:
         # A call costs a few microseconds of Python around well under one of arithmetic, so the
         # buffers and their addresses (a microsecond each to look up) are kept from call to call;
@@ -340,11 +348,7 @@ class Native:
                     shape = np.broadcast(*arrays).shape
                     break
                 shape = s
-        kept = getattr(self._scratch, "kept", None)
-        if kept is None or kept[0] != shape:
-            src, out = np.empty((self.nargs, *shape)), np.empty((self.count, *shape))
-            kept = self._scratch.kept = (shape, src, out, src.ctypes.data, out.ctypes.data, math.prod(shape))
-        _, src, out, src_at, out_at, size = kept
+        _, src, out, src_at, out_at, size = self._buffers(shape)
         for i, a in enumerate(arrays):  # one row per argument; a constant fills its row
             src[i] = a
         fn(src_at, out_at, size)
@@ -361,11 +365,7 @@ class Native:
             if s != shape and s != (1,):
                 shape = np.broadcast_shapes(*(b.shape[1:] for b in blocks))
                 break
-        kept = getattr(self._scratch, "kept", None)
-        if kept is None or kept[0] != shape:
-            src, out = np.empty((self.nargs, *shape)), np.empty((self.count, *shape))
-            kept = self._scratch.kept = (shape, src, out, src.ctypes.data, out.ctypes.data, math.prod(shape))
-        _, src, out, src_at, out_at, size = kept
+        _, src, out, src_at, out_at, size = self._buffers(shape)
         row = 0
         for b in blocks:
             end = row + b.shape[0]
