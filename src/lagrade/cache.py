@@ -11,7 +11,8 @@ write, and the sandbox never lets an answer file read or write it. Its name hash
 could change its content: the problem as loaded, lagrade's own source files (size and mtime, so an
 edited checkout never reads a stale entry), the versions of Python, sympy and numpy, and the kind of
 compiled code (machine code through llvmlite, or numpy). A corrupt, foreign or unreadable entry is
-ignored and rebuilt: the cache can make a check faster, never wrong and never fail. ``LAGRADE_CACHE=off`` turns it off; ``LAGRADE_CACHE=DIR`` moves it.
+ignored and rebuilt: the cache can make a check faster, never wrong and never fail.
+``LAGRADE_CACHE=off`` turns it off; ``LAGRADE_CACHE=DIR`` moves it.
 """
 
 from __future__ import annotations
@@ -57,7 +58,8 @@ def code_fingerprint() -> str:
 
     from lagrade.native import backend
 
-    h = hashlib.sha256(f"{lagrade.__version__} {sys.version} {sp.__version__} {np.__version__} {backend()}".encode())
+    versions = f"{lagrade.__version__} {sys.version} {sp.__version__} {np.__version__} {backend()}"
+    h = hashlib.sha256(versions.encode())
     for path in sorted(_PACKAGE.rglob("*.py")):
         st = path.stat()
         h.update(f"{path.relative_to(_PACKAGE)} {st.st_size} {st.st_mtime_ns}\n".encode())

@@ -190,7 +190,7 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
         refs[system.key]
     from lagrade.native import available
 
-    available()  # loads LLVM (about 40 ms) now rather than when the answer's equations are compiled
+    available()  # loads LLVM (about 20 ms) now rather than when the answer's equations are compiled
     if not as_json:
         import rich.console  # noqa: F401
     loaded = finish_loading()
