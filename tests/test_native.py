@@ -203,3 +203,32 @@ def test_the_memo_of_compiled_functions_keeps_the_most_recently_used():
         compile_exprs([sp.cos(x) + i * y], [x, y])
         assert compile_exprs(reference, [x, y]) is kept  # used for every answer: never evicted
     assert len(numeric._COMPILED) <= numeric._COMPILED_MAX
+
+
+# ------------------------------------------------------------------------------- the numpy fallback
+
+
+@pytest.mark.parametrize("answer", ["reference_solutions/12.14/answer.py",
+                                    "tests/answers/12.14/wrong_centrifugal_sign_exact.py",
+                                    "tests/answers/12.43/wrong_sign_of_V.py"])
+def test_without_llvmlite_the_numpy_code_grades_the_same(answer, tmp_path):
+    """LAGRADE_NATIVE=0 stands for a machine without llvmlite: every verdict and score the same."""
+    import json
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    path = root / answer
+    if not path.is_file():
+        pytest.skip(f"{answer} is not in this checkout")
+    pid = path.parent.name
+    results = {}
+    for native_flag in ("1", "0"):
+        env = {**os.environ, "LAGRADE_NATIVE": native_flag, "LAGRADE_CACHE": str(tmp_path / native_flag)}
+        out = subprocess.run([sys.executable, "-m", "lagrade", "check", pid, str(path), "--json"],
+                             capture_output=True, text=True, env=env, check=False)
+        data = json.loads(out.stdout)
+        results[native_flag] = [(p["part"], p["verdict"], p["score"]) for p in data["parts"]]
+    assert results["1"] and results["1"] == results["0"]
