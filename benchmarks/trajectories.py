@@ -5,10 +5,12 @@ downward vertical; parameters m1, m2, l1, l2, g; horizon 2 s). Every figure is t
 ``--repeats`` timed repeats (each thing is run once before timing, as a warm-up), with the target next
 to the ratio. Three comparisons:
 
-1. **Cost per trajectory** (target: batched >= 5x cheaper). lagrade's ``integrate`` (its batched
-   pure-numpy DOP853: K trajectories share each step, each keeps its own error control; one call of
-   the compiled right-hand side covers all K states) against the plain way: lambdify the closed-form
-   accelerations once and call ``scipy.integrate.solve_ivp(method="DOP853")`` once per trajectory.
+1. **Cost per trajectory** (target: batched >= 5x cheaper). lagrade's ``integrate`` on the grader's
+   own reference rates (``mech.lagrange_rates``): its batched DOP853, K trajectories stepped together,
+   each with its own step size and error control, the 12 stages of a step in one call of machine code
+   (``lagrade.native.Stages``, where llvmlite is; numpy code otherwise), against the plain way:
+   lambdify the closed-form accelerations once and call ``scipy.integrate.solve_ivp(method="DOP853")``
+   once per trajectory.
 2. **Right-hand side per evaluation** (target: lagrade <= 3x numba). ``mech.accelerations`` (the
    compiled accelerations: machine code through llvmlite, ``lagrade.native``, or numpy code where
    llvmlite is missing; the header says which) on a batch of K states against an ``@njit`` loop over the K
@@ -92,19 +94,10 @@ def states(mech, K: int, seed: str = "bench"):
     return q, qd, params
 
 
-def batched_rates(mech, params: np.ndarray):
-    """The grader's right-hand side for a batch: (t, Y (2n, K)) -> (2n, K)."""
-    n = len(mech.s.q)
-
-    def rates(t, Y):
-        return np.concatenate([Y[n:], mech.accelerations(Y[:n], Y[n:], np.full(Y.shape[1], t), params)])
-    return rates
-
-
 def lagrade_run(mech, q, qd, params, tol: float):
     """lagrade's ``integrate`` on the K states at once, rtol = atol = tol, 201 output times."""
     acc = replace(ACCURACY["default"], rtol=tol, atol=tol, max_rhs_evals=10**7)
-    run = integrate(batched_rates(mech, params), np.concatenate([q, qd]), mech.system.horizon, acc,
+    run = integrate(mech.lagrange_rates(params), np.concatenate([q, qd]), mech.system.horizon, acc,
                     samples=SAMPLES, method="DOP853")
     if not run.ok:
         raise RuntimeError(f"lagrade integrate failed at tol {tol:g}: {run.message}")
@@ -291,7 +284,7 @@ def pydy_runs(system, consts, mech, q, qd, params, tol: float, count: bool = Fal
 def check_pydy_rhs(system, consts, mech) -> float:
     """max over random states and parameters of |PyDy rhs - lagrade rates| / max |lagrade rates|."""
     q, qd, params = states(mech, 8, seed="pydy-check")
-    mine = batched_rates(mech, params)(0.3, np.concatenate([q, qd]))
+    mine = mech.lagrange_rates(params)(0.3, np.concatenate([q, qd]))
     worst = 0.0
     for k in range(q.shape[1]):
         pydy_set(system, consts, mech, np.concatenate([q[:, k], qd[:, k]]), params[:, k])

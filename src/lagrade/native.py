@@ -11,7 +11,9 @@ trajectory run.
 
 What is compiled: one function ``f(double *in, double *out, int64 K)`` that loops over the K
 columns of ``in`` (one row per argument) and writes each expression into a row of ``out``, with
-common subexpressions computed once per column. The arithmetic is IEEE double without fast-math
+common subexpressions computed once per column. For an integration, `Stages` links such a function
+(a scene's rates) with a loop over Runge-Kutta stages, so one call does a whole DOP853 step of a
+batch: the Python around a stage costs ten times the stage's arithmetic. The arithmetic is IEEE double without fast-math
 (no reassociation), calling the C library for sin, cos, exp, ... Anything outside that vocabulary
 (complex values, unknown functions) makes `compile_native` return None, and the caller keeps the
 numpy code.
@@ -31,7 +33,7 @@ from collections.abc import Sequence
 import numpy as np
 import sympy as sp
 
-__all__ = ["Native", "available", "backend", "compile_native"]
+__all__ = ["Native", "Stages", "available", "backend", "compile_native"]
 
 
 @functools.cache
@@ -237,8 +239,42 @@ class _Emitter:
         raise _Unsupported(name)
 
 
-def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol]) -> str:
-    """The LLVM IR of ``void lagrade_fill(double *in, double *out, i64 K)``."""
+def _solved(ir, b, values: list, n: int) -> list:
+    """x with A x = r for A (n*n entries, row by row) and r (n entries) following in ``values``:
+    Gaussian elimination with partial pivoting, unrolled (n is small, and known when compiling).
+    A zero pivot makes the whole solution NaN, as `lagrade.numeric.solve_batch` has it."""
+    double = ir.DoubleType()
+    fabs = b.module.declare_intrinsic("llvm.fabs", [double])
+    a = [values[i * n:(i + 1) * n] for i in range(n)]
+    r = values[n * n:]
+    zero = ir.Constant(double, 0.0)
+    singular = ir.Constant(ir.IntType(1), 0)
+    for col in range(n):
+        for i in range(col + 1, n):  # keep the larger |entry| in the pivot row: the largest after the pass
+            swap = b.fcmp_ordered(">", b.call(fabs, [a[i][col]]), b.call(fabs, [a[col][col]]))
+            for j in range(col, n):
+                a[col][j], a[i][j] = b.select(swap, a[i][j], a[col][j]), b.select(swap, a[col][j], a[i][j])
+            r[col], r[i] = b.select(swap, r[i], r[col]), b.select(swap, r[col], r[i])
+        pivot = a[col][col]
+        singular = b.or_(singular, b.fcmp_ordered("==", pivot, zero))
+        for i in range(col + 1, n):
+            f = b.fdiv(a[i][col], pivot)
+            for j in range(col + 1, n):
+                a[i][j] = b.fsub(a[i][j], b.fmul(f, a[col][j]))
+            r[i] = b.fsub(r[i], b.fmul(f, r[col]))
+    x = [None] * n
+    for i in reversed(range(n)):
+        acc = r[i]
+        for j in range(i + 1, n):
+            acc = b.fsub(acc, b.fmul(a[i][j], x[j]))
+        x[i] = b.fdiv(acc, a[i][i])
+    nan = ir.Constant(double, math.nan)
+    return [b.select(singular, nan, v) for v in x]
+
+
+def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol], solve: int = 0) -> str:
+    """The LLVM IR of ``void lagrade_fill(double *in, double *out, i64 K)``; with ``solve`` = n, the
+    expressions are A (n*n) and r (n) and what is written is x with A x = r (`_solved`)."""
     ir, _, _ = _llvm()
     shared, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_c"), order="none")
     double, i64 = ir.DoubleType(), ir.IntType(64)
@@ -259,9 +295,12 @@ def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol]) -> str:
     emit = _Emitter(ir, module, b, env)
     for sym, e in shared:
         env[sym] = emit.ev(e)
-    for j, e in enumerate(reduced):
+    values = [emit.ev(e) for e in reduced]
+    if solve:
+        values = _solved(ir, b, values, solve)
+    for j, v in enumerate(values):
         at = b.add(b.mul(ir.Constant(i64, j), K), k)
-        b.store(emit.ev(e), b.gep(dst, [at]))
+        b.store(v, b.gep(dst, [at]))
     nxt = b.add(k, ir.Constant(i64, 1))
     k.add_incoming(nxt, loop)
     b.cbranch(b.icmp_signed("<", nxt, K), loop, done)
@@ -289,7 +328,7 @@ class _Library:
 
     __slots__ = ("address", "jit", "tracker")
 
-    def __init__(self, ir_text: str):
+    def __init__(self, ir_text: str, symbol: str = "lagrade_fill"):
         from llvmlite.binding.orcjit import JITLibraryBuilder
 
         _, binding, target = _llvm()
@@ -303,8 +342,8 @@ class _Library:
             _jit[1] += 1
             name = f"lagrade{next(_library_names)}"
             self.tracker = (JITLibraryBuilder().add_ir(ir_text).add_current_process()
-                            .export_symbol("lagrade_fill").link(self.jit, name))
-        self.address = self.tracker["lagrade_fill"]
+                            .export_symbol(symbol).link(self.jit, name))
+        self.address = self.tracker[symbol]
 
     def __del__(self):
         tracker = getattr(self, "tracker", None)
@@ -324,6 +363,7 @@ class Native:
         self.ir_text, self.count, self.nargs = ir_text, count, nargs
         self._fn = None
         self._scratch = threading.local()  # per thread: buffers filled and read around one call
+        self._stages: dict[tuple[int, int], Stages] = {}
 
     def _build(self):
         self._library = _Library(self.ir_text)
@@ -379,22 +419,159 @@ class Native:
         fn(src_at, out_at, size)
         return out.copy()
 
+    def stages(self, dim: int, copied: int = 0) -> Stages:
+        """The Runge-Kutta stage loop around this function (`Stages`), made once per layout: the
+        reference's rates serve every answer of a bulk run."""
+        made = self._stages.get((dim, copied))
+        if made is None:
+            made = self._stages[(dim, copied)] = Stages(self, dim, copied)
+        return made
+
     def __reduce__(self):
         return Native, (self.ir_text, self.count, self.nargs)
 
 
-def compile_native(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Native | None:
-    """Machine code for ``exprs`` over the batch, or None (no llvmlite, or a node it cannot write)."""
+def compile_native(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol], solve: int = 0) -> Native | None:
+    """Machine code for ``exprs`` over the batch, or None (no llvmlite, or a node it cannot write).
+
+    ``solve`` = n: ``exprs`` are the n*n entries of A (row by row) and the n of r, and the function
+    gives x with A x = r at each point (a linear solve per state, inside the same machine code)."""
     if _llvm() is None or not exprs:
         return None
     exprs = [sp.sympify(e) for e in exprs]
+    if solve and len(exprs) != solve * (solve + 1):
+        raise ValueError(f"a solve of {solve} unknowns takes {solve * (solve + 1)} expressions, not {len(exprs)}")
     if any(e.has(sp.I) for e in exprs):
         return None
     try:
-        text = _module_ir(exprs, list(args))
+        text = _module_ir(exprs, list(args), solve)
     except _Unsupported:
         return None
     _llvm()[1].parse_assembly(text).verify()  # LLVM aborts on malformed IR: find out here, loudly
-    made = Native(text, len(exprs), len(args))
+    made = Native(text, solve or len(exprs), len(args))
     made._build()
     return made
+
+
+# ----------------------------------------------------------------------------- Runge-Kutta stages
+
+
+def _loop(ir, b, start, stop, body) -> None:
+    """``for (i = start; i < stop; ++i) body(i)`` at the builder's position (i64 bounds)."""
+    i64 = ir.IntType(64)
+    before = b.block
+    head, inside, after = (b.append_basic_block(x) for x in ("head", "body", "after"))
+    b.branch(head)
+    b.position_at_end(head)
+    i = b.phi(i64)
+    i.add_incoming(start, before)
+    b.cbranch(b.icmp_signed("<", i, stop), inside, after)
+    b.position_at_end(inside)
+    body(i)
+    i.add_incoming(b.add(i, ir.Constant(i64, 1)), b.block)
+    b.branch(head)
+    b.position_at_end(after)
+
+
+#: ``void lagrade_stages(Z, T, h, coef, in, out, rates, amax, K, s0, s1)``; see `Stages`.
+_STAGES_SIGNATURE = ctypes.PYFUNCTYPE(None, *[ctypes.c_void_p] * 8, ctypes.c_int64, ctypes.c_int64, ctypes.c_int64)
+#: columns of the stage coefficient table: [1, a_s0, ..., a_s(s-1)] for stages up to 15
+STAGE_COLUMNS = 17
+
+
+def _stages_ir(dim: int, copied: int) -> str:
+    """The IR of the stage loop around ``lagrade_fill`` (declared, linked in from the rates' module)."""
+    ir, _, _ = _llvm()
+    double, i64 = ir.DoubleType(), ir.IntType(64)
+    dptr = double.as_pointer()
+    module = ir.Module(name="lagrade_stages")
+    fill = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr, dptr, i64]), name="lagrade_fill")
+    fn = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr] * 8 + [i64] * 3), name="lagrade_stages")
+    Z, T, h, coef, src, out, rates, amax, K, s0, s1 = fn.args
+    b = ir.IRBuilder(fn.append_basic_block("entry"))
+    c = lambda x: ir.Constant(i64, x)  # noqa: E731
+    fabs = module.declare_intrinsic("llvm.fabs", [double])
+    size = b.mul(c(dim), K)            # entries of a state: dim rows of K columns
+    acc = b.alloca(double)  # in the entry block: an alloca inside a loop would grow the stack per pass
+    _loop(ir, b, c(0), K, lambda k: b.store(ir.Constant(double, 0.0), b.gep(amax, [k])))
+
+    def stage(s):
+        row = b.mul(s, c(STAGE_COLUMNS))
+
+        def entry(i):  # the stage's state: Z[0] + sum_j coef[s, j] Z[j]  (Z[0] is y, coef[s, 0] = 1)
+            b.store(b.load(b.gep(Z, [i])), acc)
+            _loop(ir, b, c(1), b.add(s, c(1)), lambda j: b.store(
+                b.fadd(b.load(acc), b.fmul(b.load(b.gep(coef, [b.add(row, j)])),
+                                            b.load(b.gep(Z, [b.add(b.mul(j, size), i)])))), acc))
+            b.store(b.load(acc), b.gep(src, [i]))
+
+        _loop(ir, b, c(0), size, entry)
+        _loop(ir, b, c(0), K, lambda k: b.store(b.load(b.gep(T, [b.add(b.mul(s, K), k)])),
+                                                b.gep(src, [b.add(size, k)])))
+        b.call(fill, [src, out, K])
+        dst = b.mul(b.add(s, c(1)), size)
+
+        def rows(first: int, last: int, source, shift: int):
+            """Rates of rows first..last-1, read from ``source`` ``shift`` rows further on."""
+            def column(d, k):
+                i = b.add(b.mul(d, K), k)
+                r = b.load(b.gep(source, [b.add(b.mul(c(shift), K), i)]))
+                b.store(r, b.gep(rates, [i]))
+                b.store(b.fmul(r, b.load(b.gep(h, [k]))), b.gep(Z, [b.add(dst, i)]))
+                size_r = b.call(fabs, [r])
+                top = b.gep(amax, [k])
+                old = b.load(top)
+                b.store(b.select(b.fcmp_ordered(">", size_r, old), size_r, old), top)
+            _loop(ir, b, c(first), c(last), lambda d: _loop(ir, b, c(0), K, lambda k: column(d, k)))
+
+        rows(0, copied, src, copied)               # q' = the state's velocity rows
+        rows(copied, dim, out, -copied)            # what the compiled rates wrote
+
+    _loop(ir, b, s0, s1, stage)
+    b.ret_void()
+    return str(module)
+
+
+class Stages:
+    """Explicit Runge-Kutta stages of a batch in one call of machine code, around compiled rates.
+
+    ``rates`` is a `Native` of the argument rows [state (dim rows), t, constants...]; it writes the
+    last ``dim - copied`` rates, the first ``copied`` being state rows ``copied .. 2 copied - 1`` as
+    they are (q' = q-dot of a second-order system). Stage s (from ``s0`` up to ``s1``) reads the
+    stacked scaled stages ``Z`` ((17, dim*K): y, h K_0, h K_1, ...), the stage times ``T`` ((16, K))
+    and the steps ``h`` ((K,)), and writes ``Z[s + 1] = h * rates(T[s], Z[0] + sum_j coef[s, j] Z[j])``;
+    the state of the last stage is left in the first dim rows of ``src`` and its rates (unscaled) in
+    ``rates`` ((dim, K)), and ``amax`` ((K,)) gets each column's largest |rate| over the stages (the
+    integrator's singularity guard).
+    """
+
+    def __init__(self, rates: Native, dim: int, copied: int = 0):
+        if rates.count != dim - copied:
+            raise ValueError(f"rates write {rates.count} rows, {dim - copied} expected")
+        self.rates, self.dim, self.copied = rates, dim, copied
+        self._library = None
+
+    def _build(self):
+        _, binding, _ = _llvm()
+        module = binding.parse_assembly(self.rates.ir_text)
+        module.link_in(binding.parse_assembly(_stages_ir(self.dim, self.copied)))
+        module.verify()
+        self._library = _Library(str(module), "lagrade_stages")
+        return _STAGES_SIGNATURE(self._library.address)
+
+    def bind(self, Z: np.ndarray, T: np.ndarray, h: np.ndarray, coef: np.ndarray, src: np.ndarray,
+             out: np.ndarray, rates: np.ndarray, amax: np.ndarray):
+        """``run(s0, s1)`` on these buffers (C-contiguous float64)."""
+        K = h.shape[0]
+        shapes = {"Z": (Z, (STAGE_COLUMNS, self.dim * K)), "T": (T, (STAGE_COLUMNS - 1, K)),
+                  "coef": (coef, (STAGE_COLUMNS - 1, STAGE_COLUMNS)), "src": (src, (self.rates.nargs, K)),
+                  "out": (out, (self.rates.count, K)), "rates": (rates, (self.dim, K)), "amax": (amax, (K,))}
+        for name, (a, shape) in shapes.items():
+            if a.shape != shape or a.dtype != np.float64 or not a.flags.c_contiguous:
+                raise ValueError(f"{name}: a C-contiguous float64 array of shape {shape} expected")
+        fn = self._build() if self._library is None else _STAGES_SIGNATURE(self._library.address)
+        run = functools.partial(fn, Z.ctypes.data, T.ctypes.data, h.ctypes.data, coef.ctypes.data,
+                                src.ctypes.data, out.ctypes.data, rates.ctypes.data, amax.ctypes.data, K)
+        # the machine code has only the addresses: the buffers (and the code) live as long as `run`
+        run.keep = (Z, T, h, coef, src, out, rates, amax, self._library)
+        return run

@@ -34,14 +34,19 @@ def compile_exprs(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vector
     in a bulk run that is most of the compiling (lambdify costs milliseconds per expression)."""
     exprs = _defined(exprs)
     key = (tuple(exprs), tuple(args))
-    hit = _COMPILED.pop(key, None)
-    if hit is not None:
-        _COMPILED[key] = hit  # the most recently used again
-        return hit
+    hit = _COMPILED.get(key)
+    if hit is None:
+        hit = _compile(exprs, args)
+    _remember(key, hit)
+    return hit
+
+
+def _remember(key: tuple, made: Vectorized) -> None:
+    """Keep ``made`` as the most recently used entry of the memo (the least recently used goes)."""
+    _COMPILED.pop(key, None)
     if len(_COMPILED) >= _COMPILED_MAX:
         _COMPILED.pop(next(iter(_COMPILED)))
-    _COMPILED[key] = made = _compile(exprs, args)
-    return made
+    _COMPILED[key] = made
 
 
 def _compile(exprs: list[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
@@ -248,7 +253,8 @@ def compile_linear_solve(A: Sequence[Sequence[sp.Expr]], b: Sequence[sp.Expr], a
 
     Up to two unknowns the solution is written out (Cramer's rule, the determinant shared by CSE):
     one compiled call per evaluation and no LAPACK call, which is most of a 1- or 2-DOF right-hand
-    side. Larger systems: A and b in one compiled call, then batched LU (`solve_batch`)."""
+    side. Larger systems: in machine code, A and b and then the elimination in the same function
+    (`lagrade.native`); in numpy code, A and b in one compiled call, then batched LU (`solve_batch`)."""
     n = len(b)
     if n == 1:
         return compile_exprs([sp.sympify(b[0]) / A[0][0]], args)
@@ -256,7 +262,13 @@ def compile_linear_solve(A: Sequence[Sequence[sp.Expr]], b: Sequence[sp.Expr], a
         (a, c), (d, e) = A
         det = a * e - c * d
         return compile_exprs([(e * b[0] - c * b[1]) / det, (a * b[1] - d * b[0]) / det], args)
-    return _LinearSolve(compile_exprs([*(x for row in A for x in row), *b], args), n)
+    entries = _defined([*(x for row in A for x in row), *b])
+    key = (tuple(entries), tuple(args), "solve")
+    hit = _COMPILED.get(key)
+    if hit is None:
+        hit = compile_native(entries, args, solve=n) or _LinearSolve(compile_exprs(entries, args), n)
+        _remember(key, hit)
+    return hit
 
 
 class _LinearSolve:

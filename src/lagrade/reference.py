@@ -15,6 +15,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.answers.text import parse_math
+from lagrade.compare.rates import CompiledRates
 from lagrade.numeric import Vectorized, as_row, call_blocks, compile_exprs, compile_linear_solve
 from lagrade.spec import Problem, System
 from lagrade.symbols import T, StateSymbols, to_state
@@ -152,6 +153,13 @@ class Mechanics:
         params = np.asarray(params, dtype=float)
         return call_blocks(self._accelerations_f, q, qd, as_row(t),
                            params if params.ndim == 2 else params.reshape(-1, 1))
+
+    def lagrange_rates(self, params: np.ndarray) -> CompiledRates:
+        """(q', q'') of the states (q, q') of a batch whose parameters are ``params`` (P, K): the right-hand
+        side of the reference motion, one compiled call (machine-code stages where llvmlite is)."""
+        n = len(self.s.q)
+        return CompiledRates(self._accelerations_f, 2 * n, np.asarray(params, dtype=float).reshape(len(self.params), -1),
+                             copied=n)
 
     @cached_property
     def _momentum_f(self) -> Vectorized:

@@ -18,7 +18,8 @@ from lagrade.checkers.base import Context, InvalidAnswer, equation_rows, graded,
 from lagrade.compare.equations import CompiledRows, analyse_rows
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs
-from lagrade.numeric import agree, as_row, compile_exprs, evaluate, scale_of
+from lagrade.compare.rates import CompiledRates
+from lagrade.numeric import Vectorized, agree, compile_exprs, evaluate, scale_of
 from lagrade.reference import Mechanics
 from lagrade.result import PartResult
 from lagrade.sampling import rng_for, sample_points, state_arrays, with_reference_dynamics
@@ -46,25 +47,14 @@ def _trajectory_inits(ctx: Context, mech: Mechanics, part: Part):
     return q, qd, params, extra
 
 
-def _lagrange_rates(acc: Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray], n: int):
-    def rates(t: float, y: np.ndarray) -> np.ndarray:
-        q, qd = y[:n], y[n:]
-        return np.concatenate([qd, acc(q, qd, np.full(y.shape[1], t))])
-    return rates
-
-
-def _reference_lagrange(mech: Mechanics, params: np.ndarray):
-    n = len(mech.names)
-    return _lagrange_rates(lambda q, qd, t: mech.accelerations(q, qd, t, params), n)
-
-
-def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc) -> Comparison:
-    """``student_acc`` is called once per right-hand side evaluation: it must be compiled already."""
+def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc: Callable[[], Vectorized]) -> Comparison:
+    """``student_acc()``: the student's accelerations, compiled, as a function of the rows [q, q', t,
+    parameters, the part's extra symbols]."""
     q, qd, params, extra = _trajectory_inits(ctx, mech, part)
     n = len(mech.names)
-    stu = _lagrange_rates(lambda q_, qd_, t: student_acc(q_, qd_, t, params, extra), n)
+    stu = CompiledRates(student_acc(), 2 * n, np.concatenate([params, extra]), copied=n)
     labels = [*mech.names, *(f"{x}'" for x in mech.names)]
-    ref = _reference_lagrange(mech, params)
+    ref = mech.lagrange_rates(params)
     y0 = np.concatenate([q, qd])
     comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy,
                               events=_contact_events(mech, y0, params),
@@ -83,7 +73,8 @@ def _contact_events(mech: Mechanics, y0: np.ndarray, params: np.ndarray) -> list
     return [e for e in SceneModel(mech).events(y0, params) if e.action == "stop"]
 
 
-def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rates) -> Comparison:
+def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rates: Callable[[], Vectorized]) -> Comparison:
+    """``student_rates()``: (q', p') compiled as a function of the rows [q, p, t, parameters, extra]."""
     q, qd, params, extra = _trajectory_inits(ctx, mech, part)
     n = len(mech.names)
     t0 = np.zeros(q.shape[1])
@@ -92,8 +83,7 @@ def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rate
     def ref(t: float, y: np.ndarray) -> np.ndarray:
         return mech.hamilton_rates(y[:n], y[n:], np.full(y.shape[1], t), params)
 
-    def stu(t: float, y: np.ndarray) -> np.ndarray:
-        return student_rates(y[:n], y[n:], np.full(y.shape[1], t), params, extra)
+    stu = CompiledRates(student_rates(), 2 * n, np.concatenate([params, extra]))
 
     labels = [*mech.names, *(f"p_{x}" for x in mech.names)]
     y0 = np.concatenate([q, p])
@@ -148,16 +138,16 @@ def _wrong(part: Part, fraction: float, message: str, traj: Comparison | None, c
     return res
 
 
-def _lazy(build: Callable[[], Callable]) -> Callable:
+def _once(build: Callable[[], Vectorized]) -> Callable[[], Vectorized]:
     """Compile a student's dynamics only if a trajectory is needed, and then only once."""
-    made: list[Callable] = []
+    made: list[Vectorized] = []
 
-    def call(*args):
+    def get() -> Vectorized:
         if not made:
             made.append(build())
-        return made[0](*args)
+        return made[0]
 
-    return call
+    return get
 
 
 def _sentence(parts: list[str]) -> str:
@@ -193,9 +183,8 @@ def _el_matrix(L: sp.Expr, mech: Mechanics, pts, part: Part) -> np.ndarray:
 
 def _lagrange_solver(L: sp.Expr, mech: Mechanics, part: Part):
     """Accelerations of the motion ``L`` (with the scene's forces) defines, compiled once."""
-    rows = CompiledRows(mech.lagrange_rows(L), mech.s.qdd, [*mech.s.q, *mech.s.qd, T, *mech.params,
-                                         *(sp.Symbol(s) for s in part.symbols)])
-    return lambda q, qd, t, params, extra: rows.solve_blocks(q, qd, as_row(t), params, extra)
+    return CompiledRows(mech.lagrange_rows(L), mech.s.qdd, [*mech.s.q, *mech.s.qd, T, *mech.params,
+                                                          *(sp.Symbol(s) for s in part.symbols)]).solver
 
 
 def reduce_by_constraints(expr: sp.Expr, mech: Mechanics) -> sp.Expr:
@@ -229,7 +218,7 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
     E_s = _el_matrix(L_s, mech, pts, part)
     c = _scaling(E_s, E_r, groups, per)
 
-    student_acc = _lazy(lambda: _lagrange_solver(L_s, mech, part))
+    student_acc = _once(lambda: _lagrange_solver(L_s, mech, part))
 
     if c is not None and np.allclose(c, 1.0, rtol=1e-8, atol=0):
         proof, traj = _confirm(
@@ -365,8 +354,8 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     truth = np.array(pts.args(mech.s.qdd))
     an = analyse_rows(compiled, pts.args(args), truth, list(mech.names))
 
-    def student_acc(q, qd, t, params, extra_v):
-        return compiled.solve_blocks(q, qd, as_row(t), params, extra_v)
+    def student_acc() -> Vectorized:
+        return compiled.solver
 
     if an.fraction >= 1.0:
         proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
@@ -516,7 +505,7 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
     tol = 1e-8 * scale_of(h_s, h_r)
     same = all(np.all(np.abs(diff[g * per:(g + 1) * per] - diff[g * per]) <= tol) for g in range(groups))
 
-    student_rates = _lazy(lambda: _hamiltonian_rates(H_s, mech, part))
+    student_rates = _once(lambda: _hamiltonian_rates(H_s, mech, part))
 
     if same:
         def prove() -> bool | None:
@@ -548,18 +537,10 @@ def _has_velocity(value: object, mech: Mechanics) -> bool:
 def _hamiltonian_rates(H: sp.Expr, mech: Mechanics, part: Part):
     extra = [sp.Symbol(s) for s in part.symbols]
     args = [*mech.s.q, *mech.s.p, T, *mech.params, *extra]
-    dq = compile_exprs([sp.diff(H, p) for p in mech.s.p], args)
-    dp = compile_exprs([-sp.diff(H, q) for q in mech.s.q], args)
-    Q = compile_exprs(mech.Q, [*mech.s.q, *mech.s.qd, T, *mech.params]) if any(x != 0 for x in mech.Q) else None
-
-    def rates(q, p, t, params, extra_v):
-        qd = dq(*q, *p, t, *params, *extra_v)
-        pd = dp(*q, *p, t, *params, *extra_v)
-        if Q is not None:
-            pd = pd + Q(*q, *qd, t, *params)
-        return np.concatenate([qd, pd])
-
-    return rates
+    qd = [sp.diff(H, p) for p in mech.s.p]
+    at_qd = dict(zip(mech.s.qd, qd))  # the generalized forces Q(q, q', t), at q' = dH/dp
+    pd = [-sp.diff(H, q) + sp.sympify(Qi).xreplace(at_qd) for q, Qi in zip(mech.s.q, mech.Q)]
+    return compile_exprs([*qd, *pd], args)
 
 
 def _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, state) -> str:
@@ -620,8 +601,8 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
     labels = [*(f"{x}'" for x in mech.names), *(f"p_{x}'" for x in mech.names)]
     an = analyse_rows(compiled, pts.args(args), truth, labels)
 
-    def student_rates(q_, p_, t_, params_, extra_v):
-        return compiled.solve_blocks(q_, p_, as_row(t_), params_, extra_v)
+    def student_rates() -> Vectorized:
+        return compiled.solver
 
     if an.fraction >= 1.0:
         traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))

@@ -807,6 +807,14 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
     return result(0, "reached the end of the interval", i_eval)
 
 
+#: ``stages(Z, T, h, coef) -> (run, state, rates)`` or None, called once per run on the integrator's
+#: buffers: Z (17, dim*K) the scaled stages [y, h K_0, ...], T (16, K) the stage times, h (K,) the
+#: steps, coef (16, 17) stage s's row [1, A[s, :s]]. ``run(s0, s1)`` writes Z[s + 1] = h K_s for the
+#: stages s0 <= s < s1, reading Z, T and h as they are at the call; then ``state`` (dim, K) holds the
+#: last stage's state and ``rates`` (dim, K) its K_s (`lagrade.compare.rates.CompiledRates.stages`).
+StagesHook = Callable[[np.ndarray, np.ndarray, np.ndarray, np.ndarray], "tuple | None"]
+
+
 class _Budget(Exception):
     """Internal: the dense output would exceed ``max_evals``."""
 
@@ -817,7 +825,7 @@ class _Budget(Exception):
 def dop853_columns(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: float, y0: np.ndarray,
                    t_end: float, *, rtol: float, atol: float, t_eval: np.ndarray,
                    max_evals: int | None = None, events: Sequence[ColumnEvent] = (),
-                   max_events_per_column: int = 200) -> ColumnResult:
+                   max_events_per_column: int = 200, stages: StagesHook | None = None) -> ColumnResult:
     """Integrate the K columns of ``y0`` (dim, K) from t0 to t_end, each with its own time and step.
 
     The columns are stepped in lockstep: every iteration evaluates the 12 stages once for all K
@@ -837,7 +845,9 @@ def dop853_columns(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: floa
     the root with the step size of the step that held it, and its first stage is recomputed there
     (one extra call of fun), since the callback may have changed the dynamics.
 
-    Exceptions from ``fun``, an event function or a callback propagate unchanged; floating-point
+    ``stages``: the stages of every step in one call of machine code instead of ``fun`` (see
+    `StagesHook`); ``fun`` still gives the first stage, restarts and the initial step. Exceptions from
+    ``fun``, ``stages``, an event function or a callback propagate unchanged; floating-point
     warnings are silenced for the run.  The whole run fails (status -1, the column and time in the
     message) when any column's step falls below 10 ulp of its time (also after NaN/inf, which
     shrink the step), when ``max_evals`` would be exceeded, or when a column has more than
@@ -916,6 +926,12 @@ def dop853_columns(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: floa
     rejected = np.zeros(K, dtype=bool)            # rejected since the column's last accepted step
     need_f0 = np.zeros(K, dtype=bool)             # restarted at an event: K_0 must be recomputed
     n_ev_col = np.zeros(K, dtype=np.intp)
+    coef = np.zeros((N_STAGES_EXTENDED, N_STAGES_EXTENDED + 1))  # the stage rows for `stages`
+    for s, row in enumerate(rows):
+        coef[s, :s + 1] = row
+    fast = stages(Z, T, h, coef) if stages is not None else None
+    if fast is not None:
+        run_stages, last_state, last_rates = fast
     #: column -> the events that fired where it restarted, until its first step from there is
     #: accepted: a root of theirs at the restart time is the one just handled, not a new one (the
     #: root is only known to rounding, so the event may still sit on its old side there)
@@ -926,9 +942,12 @@ def dop853_columns(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: floa
         nonlocal nfev
         if nfev + 3 > limit:
             raise _Budget
-        for row, zs, dst, ts in dense_plan:
-            _dot(row, zs, out=ystage)
-            np.multiply(fun(ts, ystage2), h, out=dst)
+        if fast is not None:
+            run_stages(N_STAGES + 1, N_STAGES_EXTENDED)
+        else:
+            for row, zs, dst, ts in dense_plan:
+                _dot(row, zs, out=ystage)
+                np.multiply(fun(ts, ystage2), h, out=dst)
         nfev += 3
         _dot(_W, Kext, out=P)
 
@@ -987,17 +1006,23 @@ def dop853_columns(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: floa
             if nfev + N_STAGES > limit:
                 return over_budget()
             t_new = where(active, minimum(t + h_abs, t_end), t)
-            h = t_new - t                     # 0 for the columns that do not move
+            np.subtract(t_new, t, out=h)      # 0 for the columns that do not move (in place: `fast` reads it)
 
             multiply(F0, h, out=Z2[1])
             multiply(Ccol, h, out=T)
             add(T, t, out=T)
-            for row, zs, dst, ts in stage_plan:
-                dot(row, zs, out=ystage)
-                multiply(fun(ts, ystage2), h, out=dst)
-            dot(row_new, Z_new, out=ynew)
-            f_new = fun(t_new, ynew2)
-            multiply(f_new, h, out=hf_new2)
+            if fast is not None:
+                T[N_STAGES] = t_new           # the last stage is f(t_new, y_new), as below
+                run_stages(1, N_STAGES + 1)
+                copyto(ynew2, last_state)
+                f_new = last_rates
+            else:
+                for row, zs, dst, ts in stage_plan:
+                    dot(row, zs, out=ystage)
+                    multiply(fun(ts, ystage2), h, out=dst)
+                dot(row_new, Z_new, out=ynew)
+                f_new = fun(t_new, ynew2)
+                multiply(f_new, h, out=hf_new2)
             nfev += N_STAGES
 
             # ---- DOP853's error norm per column (RMS over dim); h is already in the stages.  Nothing

@@ -16,7 +16,7 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from lagrade.numeric import call_blocks, compile_exprs, compile_linear_solve, evaluate
+from lagrade.numeric import Vectorized, compile_exprs, compile_linear_solve, evaluate
 
 
 @dataclass
@@ -71,12 +71,13 @@ class CompiledRows:
         K = np.broadcast(*argv).size
         return evaluate(self.J_exprs, self.allargs, [*argv, *u]).reshape(self.m, self.n, K)
 
-    def solve_blocks(self, *blocks: np.ndarray) -> np.ndarray:
-        """`solve` with the arguments as blocks of rows (`lagrade.numeric.call_blocks`): what a
-        right-hand side calls, hundreds of times per trajectory run."""
+    @property
+    def solver(self) -> Vectorized:
+        """The rates these rows define as a function of the argument rows (`solve`): for linear
+        rows, the compiled solution itself, so a trajectory run can use it in machine code."""
         if self._direct is not None:
-            return call_blocks(self._direct, *blocks)
-        return self.solve([row for b in blocks for row in b])
+            return self._direct
+        return lambda *argv: self.solve(argv)
 
     def solve(self, argv: Sequence[np.ndarray]) -> np.ndarray:
         """The rates these rows define (linear rows: one solve; otherwise two Newton steps)."""

@@ -40,6 +40,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from lagrade.compare.dop853 import ColumnEvent, Event, dop853, dop853_columns
+from lagrade.compare.rates import CompiledRates
 
 #: (t, y of shape (dim, K)) -> (dim, K); t is one time for the batch, or (K,) times, one per trajectory
 #: (the DOP853 path steps each trajectory with its own step size)
@@ -276,6 +277,29 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
                                     float(size[k] / limit[k] * SINGULAR_GROWTH))
         return out.reshape(-1)
 
+    def machine_stages(hook, Z: np.ndarray, T: np.ndarray, h: np.ndarray, coef: np.ndarray):
+        """The rates' own machine code for DOP853's stages, with `fun`'s count and singularity guard."""
+        made = hook(Z, T, h, coef)
+        if made is None:
+            return None
+        run, state, out, amax = made
+
+        def stages(s0: int, s1: int) -> None:
+            nonlocal count
+            count += s1 - s0
+            if count > acc.max_rhs_evals:
+                raise _TooManyEvaluations
+            run(s0, s1)
+            # (limit is set: the integrator's first call of fun comes first)
+            if guard and amax.max() > lowest:
+                size = amax * alive if stopped else amax
+                if np.any(size > limit):
+                    k = int(np.argmax(size / limit))
+                    t_k = float(np.max(T[s0:s1, k]))
+                    raise _Singular(t_k, k, float(size[k] / limit[k] * SINGULAR_GROWTH))
+
+        return stages, state, out
+
     jac_fn = None
     if (jac if jac is not None else method in ("Radau", "BDF", "LSODA")):
         def jac_fn(t: float, flat: np.ndarray) -> np.ndarray:
@@ -345,8 +369,10 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
             return on_event
 
         evs = [ColumnEvent(ev.fn, ev.direction, act, stop(ev)) for ev, act in watched()]
+        hook = getattr(rates, "stages", None)
         res = dop853_columns(lambda t, Y: fun(t, Y.reshape(-1)).reshape(dim, K), t0, y.reshape(dim, K), horizon,
-                             rtol=acc.rtol, atol=acc.atol, t_eval=times, events=evs)
+                             rtol=acc.rtol, atol=acc.atol, t_eval=times, events=evs,
+                             stages=(lambda *buffers: machine_stages(hook, *buffers)) if hook else None)
         if res.status == -1:
             raise _Failed(res.message, res.t_failed if res.t_failed is not None else t0)
         return res.t, res.y.reshape(dim * K, -1), None
@@ -554,6 +580,17 @@ def compare_runs(student: Rates, reference: Rates, y0: np.ndarray, labels: list[
     return _compare_to_reference(student, ref, y0, labels, horizon, acc, method, window, why, amp, events)
 
 
+def _paired(reference: Rates, K: int) -> Rates:
+    """The reference's rates on 2K columns: the K states and a displaced copy of each."""
+    if isinstance(reference, CompiledRates):
+        return reference.pair()  # the same compiled function (and machine-code stages) on twice the columns
+
+    def pair_rates(t: float, Y: np.ndarray) -> np.ndarray:
+        t1, t2 = (t, t) if np.ndim(t) == 0 else (t[:K], t[K:])  # each trajectory may have its own time
+        return np.concatenate([reference(t1, Y[:, :K]), reference(t2, Y[:, K:])], axis=1)
+    return pair_rates
+
+
 def _reference_run(reference: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, chaos: bool | None,
                    events: Sequence[BatchedEvent]):
     """The reference motion, with the method, comparison window and the reason for the window."""
@@ -573,11 +610,7 @@ def _reference_run(reference: Rates, y0: np.ndarray, horizon: float, acc: Accura
     amp = None
     if chaos and not events:
         # the displaced copies double the batch: cheaper than a second integration
-        def pair_rates(t: float, Y: np.ndarray) -> np.ndarray:
-            t1, t2 = (t, t) if np.ndim(t) == 0 else (t[:K], t[K:])  # each trajectory may have its own time
-            return np.concatenate([reference(t1, Y[:, :K]), reference(t2, Y[:, K:])], axis=1)
-
-        pair = integrate(pair_rates, np.concatenate([y0, _displaced(y0)], axis=1), window, acc, method=method)
+        pair = integrate(_paired(reference, K), np.concatenate([y0, _displaced(y0)], axis=1), window, acc, method=method)
         ref = Run(pair.t, pair.y[:, :K], pair.ok, pair.message, pair.rhs_evals, pair.seconds, method,
                   pair.t_stop[:K] if pair.t_stop is not None else None, {}, None, window)
         if pair.ok:
