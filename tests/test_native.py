@@ -232,3 +232,63 @@ def test_without_llvmlite_the_numpy_code_grades_the_same(answer, tmp_path):
         data = json.loads(out.stdout)
         results[native_flag] = [(p["part"], p["verdict"], p["score"]) for p in data["parts"]]
     assert results["1"] and results["1"] == results["0"]
+
+
+# ------------------------------------------------------------------------------- calls from Python
+
+needs_fastcall = pytest.mark.skipif(not native._fastcall_possible(), reason="not a 64-bit CPython with the GIL")
+
+
+@needs_fastcall
+def test_blocks_are_read_in_place_by_a_builtin_entry_point_that_checked_itself():
+    assert native._fastcall_works()
+    made = native.compile_native([sp.sin(x) * y + z, x * z - y], [x, y, z])
+    assert made._call is not None and type(made._call).__name__ == "builtin_function_or_method"
+
+
+@needs_fastcall
+@settings(max_examples=60, deadline=None)
+@given(K=st.integers(1, 9), split=st.sampled_from([(3,), (1, 2), (2, 1), (1, 1, 1)]),
+       column_step=st.integers(1, 3), constant=st.booleans(), seed=st.integers(0, 2**32 - 1))
+def test_any_float64_blocks_give_what_the_copying_path_gives(K, split, column_step, constant, seed):
+    made = native.compile_native([sp.sin(x) * y + z, x * z - y**2, sp.exp(-z) + x], [x, y, z])
+    rng = np.random.default_rng(seed)
+    big = rng.normal(size=(3, K * column_step))
+    blocks, row = [], 0
+    for rows in split:
+        block = big[row:row + rows, ::column_step]  # a strided view, not a copy
+        if constant and rows == split[-1] and len(split) > 1:
+            block = np.ascontiguousarray(block[:, :1])  # one value for every column
+        blocks.append(block)
+        row += rows
+    out = made.blocks(*blocks)
+    call, made._call = made._call, None
+    try:
+        want = made.blocks(*blocks)
+    finally:
+        made._call = call
+    assert np.array_equal(out, want)
+
+
+@needs_fastcall
+def test_blocks_it_must_not_read_go_the_copying_way_with_the_same_result():
+    made = native.compile_native([x + 2 * y - z, x * z], [x, y, z])
+    row = np.array([[0.5, 1.5, -2.0]])
+    want = np.array([[0.5 + 2.0 + 2.0, 1.5 + 6.0 + 2.0, -2.0 - 8.0 + 2.0], [-1.0, -3.0, 4.0]])  # y = 2x, z = -2
+    for blocks in [(row.astype(np.float32), 2 * row, np.array([[-2.0]])),        # another dtype
+                   (row, (2 * row).astype(">f8"), np.full((1, 3), -2.0)),         # another byte order
+                   (np.vstack([row, 2 * row]), np.full((1, 1), -2.0)),            # broadcast first
+                   (np.vstack([row, 2 * row]), np.full((1, 3), -2.0).view(np.matrix))]:  # a subclass
+        assert np.allclose(made.blocks(*blocks), want), blocks
+
+
+def test_fastcall_switched_off_by_the_environment(monkeypatch):
+    monkeypatch.setenv("LAGRADE_FASTCALL", "0")
+    native._fastcall_possible.cache_clear()
+    try:
+        made = native.compile_native([x * y], [x, y])
+        assert made._call is None
+        assert np.allclose(made.blocks(np.ones((1, 2)), np.full((1, 2), 3.0)), [[3.0, 3.0]])
+    finally:
+        monkeypatch.delenv("LAGRADE_FASTCALL")
+        native._fastcall_possible.cache_clear()

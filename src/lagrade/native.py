@@ -273,25 +273,29 @@ def _solved(ir, b, values: list, n: int) -> list:
 
 
 def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol], solve: int = 0) -> str:
-    """The LLVM IR of ``void lagrade_fill(double *in, double *out, i64 K)``; with ``solve`` = n, the
-    expressions are A (n*n) and r (n) and what is written is x with A x = r (`_solved`)."""
+    """The LLVM IR of ``void lagrade_body(double **arg, i64 *step, double *out, i64 K)``: argument i
+    of column k is ``arg[i][k * step[i]]`` (step 0: one value for every column), expression j goes
+    to ``out[j * K + k]``; and of ``void lagrade_fill(double *in, double *out, i64 K)``, the same on
+    one contiguous row per argument. With ``solve`` = n, the expressions are A (n*n) and r (n) and
+    what is written is x with A x = r (`_solved`)."""
     ir, _, _ = _llvm()
     shared, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_c"), order="none")
     double, i64 = ir.DoubleType(), ir.IntType(64)
     dptr = double.as_pointer()
+    nargs = len(args)
     module = ir.Module(name="lagrade")
-    fn = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr, dptr, i64]), name="lagrade_fill")
-    src, dst, K = fn.args
-    entry, loop, done = fn.append_basic_block("entry"), fn.append_basic_block("loop"), fn.append_basic_block("done")
+    body = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr.as_pointer(), i64.as_pointer(), dptr, i64]),
+                       name="lagrade_body")
+    arg, step, dst, K = body.args
+    entry, loop, done = (body.append_basic_block(x) for x in ("entry", "loop", "done"))
     b = ir.IRBuilder(entry)
+    rows = [(b.load(b.gep(arg, [ir.Constant(i64, i)])), b.load(b.gep(step, [ir.Constant(i64, i)])))
+            for i in range(nargs)]
     b.cbranch(b.icmp_signed(">", K, ir.Constant(i64, 0)), loop, done)
     b.position_at_end(loop)
     k = b.phi(i64)
     k.add_incoming(ir.Constant(i64, 0), entry)
-    env = {}
-    for i, a in enumerate(args):
-        at = b.add(b.mul(ir.Constant(i64, i), K), k)
-        env[a] = b.load(b.gep(src, [at]))
+    env = {a: b.load(b.gep(row, [b.mul(k, stride)])) for a, (row, stride) in zip(args, rows)}
     emit = _Emitter(ir, module, b, env)
     for sym, e in shared:
         env[sym] = emit.ev(e)
@@ -306,7 +310,172 @@ def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol], solve: int = 0) 
     b.cbranch(b.icmp_signed("<", nxt, K), loop, done)
     b.position_at_end(done)
     b.ret_void()
+
+    fill = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr, dptr, i64]), name="lagrade_fill")
+    src, out, K = fill.args
+    b = ir.IRBuilder(fill.append_basic_block("entry"))
+    table = b.alloca(dptr, ir.Constant(i64, max(nargs, 1)))
+    steps = b.alloca(i64, ir.Constant(i64, max(nargs, 1)))
+    for i in range(nargs):
+        b.store(b.gep(src, [b.mul(ir.Constant(i64, i), K)]), b.gep(table, [ir.Constant(i64, i)]))
+        b.store(ir.Constant(i64, 1), b.gep(steps, [ir.Constant(i64, i)]))
+    b.call(body, [table, steps, out, K])
+    b.ret_void()
     return str(module)
+
+
+# ----------------------------------------------------------------------------- calls from Python
+#
+# A ctypes call costs about a microsecond before the machine code starts, more than a double
+# pendulum's accelerations take for a few states. `Native.blocks` therefore calls a second entry
+# point as a builtin function of CPython's own (METH_FASTCALL, made with PyCFunction_NewEx), which
+# reads numpy's array structs itself: type, dimensions, dtype, data and strides at the offsets of
+# numpy's public PyArrayObject_fields (unchanged from numpy 1.7 to 2.x). Whatever it does not
+# expect (another type or dtype, byte order, shape) it declines, and the copying path answers.
+# The first use checks it against that path (`_fastcall_works`); a mismatch switches it off.
+
+_METH_FASTCALL = 0x0080
+_NPY_DOUBLE = 12
+_NPY_WRITEABLE = 0x0400
+#: byte offsets in numpy's PyArrayObject_fields and PyArray_Descr (64-bit CPython)
+_DATA, _ND, _DIMS, _STRIDES, _DESCR, _FLAGS, _TYPE_NUM, _BYTEORDER = 16, 24, 32, 40, 56, 64, 28, 26
+
+
+class _MethodDef(ctypes.Structure):
+    _fields_ = [("ml_name", ctypes.c_char_p), ("ml_meth", ctypes.c_void_p), ("ml_flags", ctypes.c_int),
+                ("ml_doc", ctypes.c_char_p)]
+
+
+@functools.cache
+def _fastcall_possible() -> bool:
+    """CPython with the GIL on a 64-bit machine: the layouts the entry point reads."""
+    import sysconfig
+
+    return (sys.implementation.name == "cpython" and ctypes.sizeof(ctypes.c_void_p) == 8
+            and not sysconfig.get_config_var("Py_GIL_DISABLED") and os.environ.get("LAGRADE_FASTCALL", "1") != "0")
+
+
+def _call_ir(nargs: int, count: int) -> str:
+    """``PyObject *lagrade_call(PyObject *self, PyObject *const *args, Py_ssize_t n)``: args[0] is the
+    output, a writeable C-contiguous float64 array (count, K); args[1:] are blocks of argument rows,
+    float64 arrays (rows, K) or (rows, 1), any strides. Fills the output and returns None, or
+    touches nothing and returns False when the arguments are not of that form."""
+    ir, _, _ = _llvm()
+    i8, i32, i64, double = ir.IntType(8), ir.IntType(32), ir.IntType(64), ir.DoubleType()
+    p8, dptr = i8.as_pointer(), double.as_pointer()
+    module = ir.Module(name="lagrade_call")
+    body = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr.as_pointer(), i64.as_pointer(), dptr, i64]),
+                       name="lagrade_body")
+    fn = ir.Function(module, ir.FunctionType(p8, [p8, p8.as_pointer(), i64]), name="lagrade_call")
+    _, argv, n = fn.args
+    b = ir.IRBuilder(fn.append_basic_block("entry"))
+    c = lambda x: ir.Constant(i64, x)  # noqa: E731
+
+    def pointer(value: int, ty):
+        return b.inttoptr(c(value), ty)
+
+    incref = pointer(ctypes.cast(ctypes.pythonapi.Py_IncRef, ctypes.c_void_p).value,
+                     ir.FunctionType(ir.VoidType(), [p8]).as_pointer())
+    table = b.alloca(dptr, c(max(nargs, 1)))
+    steps = b.alloca(i64, c(max(nargs, 1)))
+    at = b.alloca(i64)
+    decline = fn.append_basic_block("decline")
+
+    def field(obj, offset: int, ty):
+        return b.load(b.bitcast(b.gep(obj, [c(offset)]), ty.as_pointer()))
+
+    def require(cond, name: str):
+        nxt = fn.append_basic_block(name)
+        b.cbranch(cond, nxt, decline)
+        b.position_at_end(nxt)
+
+    def float64_matrix(obj, name: str):
+        """Checks obj is a float64 ndarray of 2 dimensions; its (data, dims, strides, flags)."""
+        require(b.icmp_unsigned("==", b.ptrtoint(field(obj, 8, p8), i64), c(id(np.ndarray))), name + "_type")
+        require(b.icmp_signed("==", field(obj, _ND, i32), ir.Constant(i32, 2)), name + "_nd")
+        descr = field(obj, _DESCR, p8)
+        require(b.and_(b.icmp_signed("==", field(descr, _TYPE_NUM, i32), ir.Constant(i32, _NPY_DOUBLE)),
+                       b.icmp_signed("!=", field(descr, _BYTEORDER, i8), ir.Constant(i8, ord(">")))), name + "_dtype")
+        return (field(obj, _DATA, p8), field(obj, _DIMS, i64.as_pointer()), field(obj, _STRIDES, i64.as_pointer()),
+                field(obj, _FLAGS, i32))
+
+    require(b.icmp_signed(">=", n, c(1)), "has_out")
+    data, dims, strides, flags = float64_matrix(b.load(argv), "out")
+    K = b.load(b.gep(dims, [c(1)]))
+    require(b.and_(b.icmp_signed("==", b.load(dims), c(count)),
+                   b.icmp_signed("!=", b.and_(flags, ir.Constant(i32, _NPY_WRITEABLE)), ir.Constant(i32, 0))),
+            "out_shape")
+    require(b.and_(b.icmp_signed("==", b.load(b.gep(strides, [c(1)])), c(8)),
+                   b.icmp_signed("==", b.load(strides), b.mul(K, c(8)))), "out_contiguous")
+    out = b.bitcast(data, dptr)
+    b.store(c(0), at)
+
+    def block(j):
+        data, dims, strides, _ = float64_matrix(b.load(b.gep(argv, [j])), "block")
+        rows, cols = b.load(dims), b.load(b.gep(dims, [c(1)]))
+        row_step, col_step = b.load(strides), b.load(b.gep(strides, [c(1)]))
+        require(b.or_(b.icmp_signed("==", cols, K), b.icmp_signed("==", cols, c(1))), "block_columns")
+        require(b.and_(b.icmp_signed("==", b.srem(col_step, c(8)), c(0)),
+                       b.icmp_signed("<=", b.add(b.load(at), rows), c(nargs))), "block_rows")
+        step = b.select(b.icmp_signed("==", cols, c(1)), c(0), b.sdiv(col_step, c(8)))
+
+        def row(r):
+            i = b.load(at)
+            b.store(b.bitcast(b.gep(data, [b.mul(r, row_step)]), dptr), b.gep(table, [i]))
+            b.store(step, b.gep(steps, [i]))
+            b.store(b.add(i, c(1)), at)
+        _loop(ir, b, c(0), rows, row)
+
+    _loop(ir, b, c(1), n, block)
+    require(b.icmp_signed("==", b.load(at), c(nargs)), "all_rows")
+    b.call(body, [table, steps, out, K])
+    none = pointer(id(None), p8)
+    b.call(incref, [none])
+    b.ret(none)
+    b.position_at_end(decline)
+    false = pointer(id(False), p8)
+    b.call(incref, [false])
+    b.ret(false)
+    return str(module)
+
+
+def _builtin(address: int):
+    """(a builtin function object of CPython whose code is the METH_FASTCALL entry at ``address``,
+    the method record it points into): keep both as long as the code."""
+    new = ctypes.pythonapi.PyCFunction_NewEx
+    new.restype = ctypes.py_object
+    new.argtypes = [ctypes.c_void_p, ctypes.py_object, ctypes.py_object]
+    method = _MethodDef(b"lagrade_call", address, _METH_FASTCALL, None)
+    return new(ctypes.addressof(method), None, None), method
+
+
+@functools.cache
+def _fastcall_works() -> bool:
+    """The builtin entry point against the copying path on the layouts the grader passes, and
+    declining what it must not read: once per process, before any answer relies on it."""
+    a, b_, c_ = sp.symbols("a b c")
+    probe = Native(_module_ir([a + 2 * b_ - c_, a * c_], [a, b_, c_]), 2, 3)
+    library = _Library(probe.ir_text, also=[("lagrade_call", _call_ir(3, 2))])
+    call, method = _builtin(library.also["lagrade_call"])
+    probe._fn = _SIGNATURE(library.address)
+    probe._library = library
+    grid = np.arange(18.0).reshape(3, 6) / 7.0
+    cases = [(grid[:1, :4], grid[1:2, :4], grid[2:, :4]), (grid[:2, ::2], np.full((1, 1), 0.5)),
+             (grid[:, 1:4],), (np.asfortranarray(grid[:, :3]),)]
+    try:
+        for blocks in cases:
+            out = np.full((2, blocks[0].shape[1]), np.nan)
+            if call(out, *blocks) is not None or not np.array_equal(out, probe.blocks(*blocks)):
+                return False
+        row = grid[:1, :4]
+        declined = [(np.empty((2, 4)), row.astype(np.float32), row, row), (np.empty((2, 4)), row[0], row, row),
+                    (np.empty((2, 4)), row, row), (np.empty((2, 4)), grid[:, :4], row),
+                    (np.empty((3, 4)), row, row, row), (np.empty((2, 4)), row, row, grid[:1, :3]),
+                    (np.empty((2, 4)).T.copy().T, row, row, row), (np.empty((2, 4)), row.astype(">f8"), row, row),
+                    (np.empty((2, 4)), row, 1.0, row), ()]
+        return all(call(*args) is False for args in declined)
+    except Exception:  # noqa: BLE001  (anything unexpected: the copying path, which is always right)
+        return False
 
 
 # PYFUNCTYPE keeps the GIL over the call: calls last microseconds, and releasing and taking the
@@ -326,9 +495,9 @@ class _Library:
     """One linked function: its machine code lives as long as this object, and the JIT it was
     linked into at least as long (a JIT freed before its libraries takes them down with it)."""
 
-    __slots__ = ("address", "jit", "tracker")
+    __slots__ = ("address", "also", "jit", "tracker")
 
-    def __init__(self, ir_text: str, symbol: str = "lagrade_fill"):
+    def __init__(self, ir_text: str, symbol: str = "lagrade_fill", also: Sequence[tuple[str, str]] = ()):
         from llvmlite.binding.orcjit import JITLibraryBuilder
 
         _, binding, target = _llvm()
@@ -341,9 +510,12 @@ class _Library:
             self.jit = _jit[0]
             _jit[1] += 1
             name = f"lagrade{next(_library_names)}"
-            self.tracker = (JITLibraryBuilder().add_ir(ir_text).add_current_process()
-                            .export_symbol(symbol).link(self.jit, name))
+            builder = JITLibraryBuilder().add_ir(ir_text).add_current_process().export_symbol(symbol)
+            for other, other_ir in also:  # more entry points, in modules of their own
+                builder.add_ir(other_ir).export_symbol(other)
+            self.tracker = builder.link(self.jit, name)
         self.address = self.tracker[symbol]
+        self.also = {other: self.tracker[other] for other, _ in also}
 
     def __del__(self):
         tracker = getattr(self, "tracker", None)
@@ -362,11 +534,16 @@ class Native:
     def __init__(self, ir_text: str, count: int, nargs: int):
         self.ir_text, self.count, self.nargs = ir_text, count, nargs
         self._fn = None
+        self._call = None  # the builtin-function entry point of `blocks`, where it works
         self._scratch = threading.local()  # per thread: buffers filled and read around one call
         self._stages: dict[tuple[int, int], Stages] = {}
 
     def _build(self):
-        self._library = _Library(self.ir_text)
+        fast = _fastcall_possible() and _fastcall_works()
+        also = [("lagrade_call", _call_ir(self.nargs, self.count))] if fast else []
+        self._library = _Library(self.ir_text, also=also)
+        if fast:
+            self._call, self._method = _builtin(self._library.also["lagrade_call"])
         self._fn = _SIGNATURE(self._library.address)
         return self._fn
 
@@ -399,9 +576,15 @@ class Native:
 
     def blocks(self, *blocks: np.ndarray) -> np.ndarray:
         """The same, the arguments given as blocks of consecutive rows, each ``(rows, *shape)`` or
-        ``(rows, 1)``: q, q', t and the parameters of a batch in four copies instead of one per
-        argument (see `lagrade.numeric.call_blocks`)."""
+        ``(rows, 1)``: q, q', t and the parameters of a batch, read in place by the machine code
+        (2-D float64 blocks of K or 1 columns), else copied once each (see
+        `lagrade.numeric.call_blocks`)."""
         fn = self._fn or self._build()
+        call = self._call
+        if call is not None:
+            out = np.empty((self.count, blocks[0].shape[-1]))
+            if call(out, *blocks) is None:
+                return out
         shape = blocks[0].shape[1:]
         for b in blocks:
             s = b.shape[1:]
