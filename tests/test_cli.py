@@ -120,3 +120,18 @@ def test_read_back_is_one_line_in_the_books_notation():
     for piece in ("θ̇₁²", "l₀²", "m₁", "√α", "cos(θ₁)"):
         assert piece in text, (piece, text)
     assert as_unicode([sp.Eq(th.diff(t, 2), -sp.sin(th))]) == "θ̈₁ = -sin(θ₁)"
+
+
+def test_read_back_in_latex_keeps_powers_of_coordinates_and_their_derivatives():
+    """The notation is printed, not substituted: a power of q(t) or of q'(t) keeps its exponent."""
+    import sympy as sp
+
+    from lagrade.readback import as_latex, as_unicode
+
+    t = sp.Symbol("t")
+    th = sp.Function("theta1")(t)
+    assert as_latex(th**2) == r"\theta_{1}^{2}"
+    assert as_latex(th.diff(t) ** 2) == r"\dot{\theta_{1}}^{2}"
+    assert as_latex(th.diff(t, 3)) == r"\theta_{1}^{(3)}" and as_unicode(th.diff(t, 3)) == "θ₁^(3)"
+    assert as_latex(sp.Eq(th.diff(t, 2), -sp.sin(th))) == r"\ddot{\theta_{1}} = - \sin{\left(\theta_{1} \right)}"
+    assert as_unicode(sp.cos(th - sp.Function("theta2")(t))) == "cos(θ₁ - θ₂)"

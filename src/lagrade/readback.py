@@ -15,6 +15,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.pretty.pretty_symbology import greek_unicode
+from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
 MAX_CHARS = 1500
@@ -46,7 +47,6 @@ class _OneLine(StrPrinter):
         return super()._print_Mul(expr).replace("*", "·")
 
 
-_ONE_LINE = _OneLine({"order": "none"})
 
 
 def _clip(text: str) -> str:
@@ -76,30 +76,59 @@ def _latex_name(name: str) -> str:
     return f"{head}_{{{tail}}}" if tail else head
 
 
-def _display(expr: sp.Basic, unicode: bool) -> sp.Basic:
-    """Replace q(t), q'(t), q''(t) by symbols whose names print in the book's notation."""
-    mapping: dict[sp.Basic, sp.Basic] = {}
-    for d in expr.atoms(sp.Derivative):
-        f = d.expr
-        if isinstance(f, AppliedUndef) and f.args == (_T,) and all(v == _T for v in d.variables):
-            order = len(d.variables)
-            name = f.func.__name__
-            if unicode:
-                accent = {1: "\u0307", 2: "\u0308"}.get(order, "")
-                mapping[d] = sp.Symbol(_unicode_name(name, accent) + ("" if accent else f"^({order})"))
-            else:
-                accent = {1: "\\dot", 2: "\\ddot"}.get(order)
-                base = _latex_name(name)
-                mapping[d] = sp.Symbol(f"{accent}{{{base}}}" if accent else f"{base}^{{({order})}}")
-    expr = expr.xreplace(mapping) if mapping else expr
-    names = {}
-    for a in expr.atoms(AppliedUndef):
-        if a.args == (_T,):
-            names[a] = sp.Symbol(_unicode_name(a.func.__name__) if unicode else _latex_name(a.func.__name__))
-    for s in expr.free_symbols:
-        if unicode and isinstance(s, sp.Symbol) and _unicode_name(s.name) != s.name:
-            names[s] = sp.Symbol(_unicode_name(s.name))
-    return expr.xreplace(names) if names else expr
+def _time_function(expr: sp.Basic) -> str | None:
+    """The name of q in q(t) (a coordinate), else None."""
+    return expr.func.__name__ if isinstance(expr, AppliedUndef) and expr.args == (_T,) else None
+
+
+def _time_derivative(expr: sp.Derivative) -> tuple[str, int] | None:
+    """(name of q, order) for a derivative of q(t) in t only, else None."""
+    name = _time_function(expr.expr)
+    if name is None or not all(v == _T for v in expr.variables):
+        return None
+    return name, len(expr.variables)
+
+
+class _Notation:
+    """Prints q(t), q'(t), q''(t) in the book's notation while printing, not by rebuilding the
+    expression with symbols (which re-evaluates every product and sum it touches: tens of
+    milliseconds for a Lagrangian, on every check)."""
+
+    def _notation(self, name: str, order: int) -> str:
+        raise NotImplementedError
+
+    def _print_Derivative(self, expr: sp.Derivative) -> str:
+        hit = _time_derivative(expr)
+        return self._notation(*hit) if hit else super()._print_Derivative(expr)
+
+    def _print_Function(self, expr: sp.Basic, exp: str | None = None) -> str:
+        name = _time_function(expr)
+        if name is None:
+            return super()._print_Function(expr, exp) if exp is not None else super()._print_Function(expr)
+        text = self._notation(name, 0)
+        return text if exp is None else f"{text}^{{{exp}}}"  # LaTeX's power of a function
+
+
+class _UnicodeLine(_Notation, _OneLine):
+    def _notation(self, name: str, order: int) -> str:
+        accent = {1: "\u0307", 2: "\u0308"}.get(order, "")
+        return _unicode_name(name, accent) + ("" if accent or not order else f"^({order})")
+
+    def _print_Symbol(self, expr: sp.Symbol) -> str:
+        return _unicode_name(expr.name)
+
+
+class _Latex(_Notation, LatexPrinter):
+    def _notation(self, name: str, order: int) -> str:
+        base = _latex_name(name)
+        if not order:
+            return self._print(sp.Symbol(base))
+        accent = {1: "\\dot", 2: "\\ddot"}.get(order)
+        return self._print(sp.Symbol(f"{accent}{{{base}}}" if accent else f"{base}^{{({order})}}"))
+
+
+_UNICODE = _UnicodeLine()
+_LATEX = _Latex()
 
 
 def _key(k: object) -> str:
@@ -110,7 +139,7 @@ def as_unicode(value: object) -> str:
     if isinstance(value, (bool, int, str)):
         return repr(value)
     try:
-        show = lambda v: _ONE_LINE.doprint(_display(sp.sympify(v), True))  # noqa: E731
+        show = lambda v: _UNICODE.doprint(sp.sympify(v))  # noqa: E731
         if isinstance(value, dict):
             return _clip("\n".join(f"{_key(k)}: {show(v)}" for k, v in value.items()))
         if isinstance(value, (list, tuple)):
@@ -126,7 +155,7 @@ def as_latex(value: object) -> str:
     if isinstance(value, (int, str)):
         return str(value)
     try:
-        show = lambda v: sp.latex(_display(sp.sympify(v), False))  # noqa: E731
+        show = lambda v: _LATEX.doprint(sp.sympify(v))  # noqa: E731
         if isinstance(value, dict):
             return _clip(r",\quad ".join(rf"\text{{{_key(k)}}}: {show(v)}" for k, v in value.items()))
         if isinstance(value, (list, tuple)):
