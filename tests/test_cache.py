@@ -149,6 +149,23 @@ def test_cache_commands(tmp_path):
     assert bad.returncode == 1 and "no-such-problem: skipped" in bad.stderr
 
 
+def test_cache_build_byte_compiles_lagrade_even_where_python_would_not_write_bytecode(tmp_path):
+    """A check imports ~40 lagrade modules: with PYTHONDONTWRITEBYTECODE (or an editable install
+    never imported yet) each would be compiled from source by every check."""
+    import importlib.util
+
+    import lagrade
+
+    package = Path(lagrade.__file__).parent
+    compiled = Path(importlib.util.cache_from_source(str(package / "readback.py")))
+    compiled.unlink(missing_ok=True)
+    env = {**os.environ, "LAGRADE_CACHE": str(tmp_path / "c"), "PYTHONDONTWRITEBYTECODE": "1"}
+    done = subprocess.run([sys.executable, "-m", "lagrade", "cache", "build", "12.4"], capture_output=True,
+                          text=True, env=env, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert compiled.is_file()
+
+
 def test_an_entry_replaces_the_stale_ones_of_its_problem(tmp_path, monkeypatch):
     monkeypatch.setenv("LAGRADE_CACHE", str(tmp_path))
     tmp_path.chmod(0o700)

@@ -2,7 +2,7 @@
 
 - ``lagrade cache build [IDS...]``: derive, compile and integrate every reference of each problem ahead
   of time, by grading its bundled reference solution (or, without one, by deriving the scenes), so
-  the first check of a class is as fast as the hundredth.
+  the first check of a class is as fast as the hundredth; and byte-compile lagrade's own modules.
 - ``lagrade cache info``: where the cache is and what it holds.
 - ``lagrade cache clear``: remove every entry.
 
@@ -61,7 +61,23 @@ def build(ids: tuple[str, ...], problems_dir: tuple[Path, ...]) -> None:
             continue
         click.echo(f"{pid}: {'built' if saved else 'up to date'} in {time.perf_counter() - start:.2f} s")
     click.echo(f"cache: {store.cache_dir()}")
+    _compile_bytecode()
     raise SystemExit(1 if failed else 0)
+
+
+def _compile_bytecode() -> None:
+    """Byte-compile lagrade's own modules, as pip does for a regular install: after an editable
+    install, or with PYTHONDONTWRITEBYTECODE set, every check would otherwise compile its ~40 modules
+    from source (about 90 ms of a 1.2 s check, measured). Where the package is read-only, nothing
+    is written and nothing fails."""
+    import compileall
+
+    import lagrade
+
+    try:
+        compileall.compile_dir(Path(lagrade.__file__).parent, quiet=2)
+    except OSError:
+        pass
 
 
 @cache.command()
