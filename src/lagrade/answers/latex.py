@@ -27,6 +27,8 @@ tree; nothing is evaluated), between a pre-pass of our own and a rebuild with an
 
 from __future__ import annotations
 
+import functools
+
 import difflib
 import re
 from collections.abc import Iterable, Sequence
@@ -643,16 +645,25 @@ def _check_slash(tokens: list[str]) -> None:
 
 # --------------------------------------------------------------------------- names and rebuild
 
+@functools.lru_cache(maxsize=64)
+def _coordinate_names(coordinates: tuple[str, ...]) -> tuple[dict[str, Any], dict[str, Any]]:
+    """q(t) by name, and q', q'' by their shorthand names (theta_d, thetaddot, ...): made once per
+    set of coordinates, since a sympy derivative costs about half a millisecond to build and every
+    LaTeX piece of every answer needs the same ones."""
+    coords = {check_name(c, "coordinate name"): sp.Function(c)(T) for c in coordinates}
+    shorthand: dict[str, Any] = {}
+    for name, q in coords.items():
+        first, second = q.diff(T), q.diff(T, 2)
+        shorthand.update({name + suffix: first for suffix in _FIRST})
+        shorthand.update({name + suffix: second for suffix in _SECOND})
+    return coords, shorthand
+
+
 class _Names:
     def __init__(self, coordinates: Sequence[str], known_names: Iterable[str] | None) -> None:
-        self.coords = {check_name(c, "coordinate name"): sp.Function(c)(T) for c in coordinates}
+        coords, shorthand = _coordinate_names(tuple(coordinates))
+        self.coords, self.shorthand = dict(coords), dict(shorthand)  # the reader's own, from shared parts
         self.known = None if known_names is None else set(known_names)
-        self.shorthand: dict[str, Any] = {}
-        for name, q in self.coords.items():
-            for suffix in _FIRST:
-                self.shorthand[name + suffix] = q.diff(T)
-            for suffix in _SECOND:
-                self.shorthand[name + suffix] = q.diff(T, 2)
         self.table: dict[str, tuple[str, int]] = {}
 
     # names ------------------------------------------------------------------------
