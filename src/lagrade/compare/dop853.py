@@ -1,4 +1,5 @@
-"""Batched DOP853: K trajectories stepped together on one time grid, in pure numpy.
+"""Batched DOP853: K trajectories stepped together, in numpy, with the stages in machine code where the
+right-hand side allows it (``dop853_columns(stages=...)``, see `StagesHook`).
 
 Why this exists instead of ``scipy.integrate.solve_ivp(method="DOP853")``:
 
