@@ -192,3 +192,13 @@ def test_a_singular_state_gives_nan_for_that_state_only():
     got = solve(np.array([0.0, 2.0, 1.0]), np.array([1.0, 0.0, 3.0]))
     assert np.all(np.isnan(got[:, :2]))   # a = 0 (rows dependent) and b = 0
     assert np.allclose(got[:, 2], [-1.0, 2.0, 1.0])
+
+
+def test_rates_without_constants_integrate_in_machine_code():
+    """x'' = -x, no parameters at all: the argument rows are the state and t only."""
+    rates = CompiledRates(compile_exprs([-x + 0 * t], [x, v, t]), 2, np.zeros((0, 3)), copied=1)
+    y0 = np.array([[1.0, 0.0, 2.0], [0.0, 1.0, 0.0]])
+    run = integrate(rates, y0, 2.0, ACCURACY["default"], method="DOP853")
+    exact = y0[0] * np.cos(2.0) + y0[1] * np.sin(2.0)
+    assert run.ok and np.allclose(run.y[0, :, -1], exact, rtol=1e-8, atol=1e-10)
+    assert rates.stages(np.zeros((17, 6)), np.zeros((16, 3)), np.zeros(3), _coef()) is not None

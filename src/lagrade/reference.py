@@ -158,8 +158,7 @@ class Mechanics:
         """(q', q'') of the states (q, q') of a batch whose parameters are ``params`` (P, K): the right-hand
         side of the reference motion, one compiled call (machine-code stages where llvmlite is)."""
         n = len(self.s.q)
-        return CompiledRates(self._accelerations_f, 2 * n, np.asarray(params, dtype=float).reshape(len(self.params), -1),
-                             copied=n)
+        return CompiledRates(self._accelerations_f, 2 * n, params, copied=n)
 
     @cached_property
     def _momentum_f(self) -> Vectorized:

@@ -27,7 +27,8 @@ class CompiledRates:
 
     def __init__(self, f: Vectorized, dim: int, constants: np.ndarray, copied: int = 0):
         self.f, self.dim, self.copied = f, dim, copied
-        self.constants = np.ascontiguousarray(np.asarray(constants, dtype=float).reshape(len(constants), -1))
+        values = np.asarray(constants, dtype=float)
+        self.constants = np.ascontiguousarray(values[:, None] if values.ndim == 1 else values)
 
     def __call__(self, t: float | np.ndarray, Y: np.ndarray) -> np.ndarray:
         body = call_blocks(self.f, Y, as_row(t), self.constants)
