@@ -202,3 +202,12 @@ def test_rates_without_constants_integrate_in_machine_code():
     exact = y0[0] * np.cos(2.0) + y0[1] * np.sin(2.0)
     assert run.ok and np.allclose(run.y[0, :, -1], exact, rtol=1e-8, atol=1e-10)
     assert rates.stages(np.zeros((17, 6)), np.zeros((16, 3)), np.zeros(3), _coef()) is not None
+
+
+def test_stage_ranges_outside_the_table_are_refused_before_the_machine_code_writes():
+    rates, y0, _ = _ball()
+    dim, K = y0.shape
+    run = rates.stages(np.zeros((17, dim * K)), np.zeros((16, K)), np.full(K, 1e-3), _coef())[0]
+    for s0, s1 in [(0, 3), (1, 17), (5, 4)]:
+        with pytest.raises(ValueError):
+            run(s0, s1)

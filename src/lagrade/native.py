@@ -11,12 +11,13 @@ trajectory run.
 
 What is compiled: one function ``f(double *in, double *out, int64 K)`` that loops over the K
 columns of ``in`` (one row per argument) and writes each expression into a row of ``out``, with
-common subexpressions computed once per column. For an integration, `Stages` links such a function
-(a scene's rates) with a loop over Runge-Kutta stages, so one call does a whole DOP853 step of a
-batch: the Python around a stage costs ten times the stage's arithmetic. The arithmetic is IEEE double without fast-math
-(no reassociation), calling the C library for sin, cos, exp, ... Anything outside that vocabulary
-(complex values, unknown functions) makes `compile_native` return None, and the caller keeps the
-numpy code.
+common subexpressions computed once per column; the same loop also reads its arguments in place
+from numpy arrays when called from Python (`Native.blocks`). The arithmetic is IEEE double without
+fast-math (no reassociation), calling the C library for sin, cos, exp, ... Anything outside that
+vocabulary (complex values, unknown functions) makes `compile_native` return None, and the caller
+keeps the numpy code. For an integration, `Stages` links such a function (a scene's rates) with a
+loop over Runge-Kutta stages, so that one call does a whole DOP853 step of a batch: in Python, the
+code around each stage cost ten times the stage's arithmetic.
 """
 
 from __future__ import annotations
@@ -330,7 +331,7 @@ def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol], solve: int = 0) 
 # pendulum's accelerations take for a few states. `Native.blocks` therefore calls a second entry
 # point as a builtin function of CPython's own (METH_FASTCALL, made with PyCFunction_NewEx), which
 # reads numpy's array structs itself: type, dimensions, dtype, data and strides at the offsets of
-# numpy's public PyArrayObject_fields (unchanged from numpy 1.7 to 2.x). Whatever it does not
+# numpy's public PyArrayObject_fields (numpy 1.x and 2.x alike). Whatever it does not
 # expect (another type or dtype, byte order, shape) it declines, and the copying path answers.
 # The first use checks it against that path (`_fastcall_works`); a mismatch switches it off.
 
@@ -534,7 +535,7 @@ class Native:
     def __init__(self, ir_text: str, count: int, nargs: int):
         self.ir_text, self.count, self.nargs = ir_text, count, nargs
         self._fn = None
-        self._call = None  # the builtin-function entry point of `blocks`, where it works
+        self._call = self._method = None  # the builtin-function entry point of `blocks`, where it works
         self._scratch = threading.local()  # per thread: buffers filled and read around one call
         self._stages: dict[tuple[int, int], Stages] = {}
 
@@ -753,8 +754,14 @@ class Stages:
             if a.shape != shape or a.dtype != np.float64 or not a.flags.c_contiguous:
                 raise ValueError(f"{name}: a C-contiguous float64 array of shape {shape} expected")
         fn = self._build() if self._library is None else _STAGES_SIGNATURE(self._library.address)
-        run = functools.partial(fn, Z.ctypes.data, T.ctypes.data, h.ctypes.data, coef.ctypes.data,
-                                src.ctypes.data, out.ctypes.data, rates.ctypes.data, amax.ctypes.data, K)
+        call = functools.partial(fn, Z.ctypes.data, T.ctypes.data, h.ctypes.data, coef.ctypes.data,
+                                 src.ctypes.data, out.ctypes.data, rates.ctypes.data, amax.ctypes.data, K)
+
+        def run(s0: int, s1: int) -> None:
+            if not 0 < s0 <= s1 < STAGE_COLUMNS:  # the machine code writes Z[s0 + 1 .. s1] unchecked
+                raise ValueError(f"stages {s0}..{s1 - 1}: 1 <= s0 <= s1 <= {STAGE_COLUMNS - 1} expected")
+            call(s0, s1)
+
         # the machine code has only the addresses: the buffers (and the code) live as long as `run`
         run.keep = (Z, T, h, coef, src, out, rates, amax, self._library)
         return run
