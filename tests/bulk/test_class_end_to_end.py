@@ -84,3 +84,17 @@ def test_class_of_232_submissions(tmp_path, sentinel):
     assert con.execute("SELECT count(*) FROM grade_log").fetchone()[0] == len(expected) + 1
     subs, _ = stored(db)
     assert subs[(e.student, e.problem)]["score"] == e.score(weights[e.problem])
+
+
+def test_a_grader_has_imported_what_sympy_loads_lazily_for_common_answers():
+    """Sandbox children are forked from the grader: what it has not imported, every answer that
+    calls ``solve`` or ``euler_equations`` would import again (about 0.1 s each, measured)."""
+    import subprocess
+    import sys
+
+    lazy = ("sympy.physics.units", "sympy.combinatorics")  # not loaded by `import sympy`; by `solve`
+    probe = ("import sys, sympy\nbefore = [m in sys.modules for m in {lazy!r}]\n"
+             "from lagrade.bulk.worker import _warm_sympy\n_warm_sympy()\n"
+             "print(not any(before) and all(m in sys.modules for m in {lazy!r}))").format(lazy=lazy)
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=120)
+    assert out.stdout.strip() == "True", out.stderr
