@@ -16,8 +16,8 @@ from numpy arrays when called from Python (`Native.blocks`). The arithmetic is I
 fast-math (no reassociation), calling the C library for sin, cos, exp, ... Anything outside that
 vocabulary (complex values, unknown functions) makes `compile_native` return None, and the caller
 keeps the numpy code. For an integration, `Stages` links such a function (a scene's rates) with a
-loop over Runge-Kutta stages, so that one call does a whole DOP853 step of a batch: in Python, the
-code around each stage cost ten times the stage's arithmetic.
+loop over Runge-Kutta stages, so that one call does a whole DOP853 step of a batch: in Python, a
+stage of a double pendulum at 4 states cost about 15 us, in this loop under 1 us.
 """
 
 from __future__ import annotations
