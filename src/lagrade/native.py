@@ -273,6 +273,18 @@ def _solved(ir, b, values: list, n: int) -> list:
     return [b.select(singular, nan, v) for v in x]
 
 
+def _entry(ir, module, name: str):
+    """The function ``name`` of the rates' module, declared in ``module`` (defined there by
+    `_module_ir`, declared by the modules linked with it): one signature for all of them.
+
+    ``lagrade_body(double **arg, i64 *step, double *out, i64 K)``; ``lagrade_fill(double *in,
+    double *out, i64 K)``."""
+    double, i64 = ir.DoubleType(), ir.IntType(64)
+    dptr = double.as_pointer()
+    args = {"lagrade_body": [dptr.as_pointer(), i64.as_pointer(), dptr, i64], "lagrade_fill": [dptr, dptr, i64]}[name]
+    return ir.Function(module, ir.FunctionType(ir.VoidType(), args), name=name)
+
+
 def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol], solve: int = 0) -> str:
     """The LLVM IR of ``void lagrade_body(double **arg, i64 *step, double *out, i64 K)``: argument i
     of column k is ``arg[i][k * step[i]]`` (step 0: one value for every column), expression j goes
@@ -285,8 +297,7 @@ def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol], solve: int = 0) 
     dptr = double.as_pointer()
     nargs = len(args)
     module = ir.Module(name="lagrade")
-    body = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr.as_pointer(), i64.as_pointer(), dptr, i64]),
-                       name="lagrade_body")
+    body = _entry(ir, module, "lagrade_body")
     arg, step, dst, K = body.args
     entry, loop, done = (body.append_basic_block(x) for x in ("entry", "loop", "done"))
     b = ir.IRBuilder(entry)
@@ -312,7 +323,7 @@ def _module_ir(exprs: list[sp.Expr], args: Sequence[sp.Symbol], solve: int = 0) 
     b.position_at_end(done)
     b.ret_void()
 
-    fill = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr, dptr, i64]), name="lagrade_fill")
+    fill = _entry(ir, module, "lagrade_fill")
     src, out, K = fill.args
     b = ir.IRBuilder(fill.append_basic_block("entry"))
     table = b.alloca(dptr, ir.Constant(i64, max(nargs, 1)))
@@ -365,8 +376,7 @@ def _call_ir(nargs: int, count: int) -> str:
     i8, i32, i64, double = ir.IntType(8), ir.IntType(32), ir.IntType(64), ir.DoubleType()
     p8, dptr = i8.as_pointer(), double.as_pointer()
     module = ir.Module(name="lagrade_call")
-    body = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr.as_pointer(), i64.as_pointer(), dptr, i64]),
-                       name="lagrade_body")
+    body = _entry(ir, module, "lagrade_body")
     fn = ir.Function(module, ir.FunctionType(p8, [p8, p8.as_pointer(), i64]), name="lagrade_call")
     _, argv, n = fn.args
     b = ir.IRBuilder(fn.append_basic_block("entry"))
@@ -669,7 +679,7 @@ def _stages_ir(dim: int, copied: int) -> str:
     double, i64 = ir.DoubleType(), ir.IntType(64)
     dptr = double.as_pointer()
     module = ir.Module(name="lagrade_stages")
-    fill = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr, dptr, i64]), name="lagrade_fill")
+    fill = _entry(ir, module, "lagrade_fill")
     fn = ir.Function(module, ir.FunctionType(ir.VoidType(), [dptr] * 8 + [i64] * 3), name="lagrade_stages")
     Z, T, h, coef, src, out, rates, amax, K, s0, s1 = fn.args
     b = ir.IRBuilder(fn.append_basic_block("entry"))
