@@ -168,6 +168,8 @@ def _trees(draw, depth: int = 4):
 def test_any_expression_agrees_with_numpy(exprs):
     """Property: wherever numpy's code gives a number, machine code gives the same number."""
     assume(not any(e.has(sp.I) for e in exprs))  # complex constants (sqrt(-1/3)): numpy's case
+    # sympy writes Abs(exp(x)) as exp(re(x)) for a symbol that may be complex: declined, numpy's case
+    assume(not any(e.has(sp.re, sp.im) for e in exprs))
     X, Y = np.linspace(-1.7, 2.3, 11), np.linspace(0.9, -1.1, 11)
     made = native.compile_native(exprs, [x, y])
     assert made is not None
