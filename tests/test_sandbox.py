@@ -252,3 +252,21 @@ def test_parent_is_still_healthy_after_hostile_runs(tmp_path):
     out = run_answer_file(write(tmp_path, "from lagrade.answer import *\nL = sin(t)\n"), ["L"])
     assert out.status == "ok" and decode_value(out.values["L"]) == sp.sin(t)
     assert os.getcwd() and sp.sympify("1 + 1") == 2
+
+
+def test_child_does_not_look_up_libc(tmp_path, monkeypatch):
+    """libc is loaded once in the parent: ``find_library`` runs ``ldconfig`` in a subprocess, which
+    every child (a fork of a large grader) would otherwise pay for, twice."""
+    import ctypes.util
+
+    sandbox._prepare_parent()
+    marker = tmp_path / "looked-up"
+
+    def find_library(name):
+        marker.write_text(name)  # in the child this runs before privileges are dropped
+        return None
+
+    monkeypatch.setattr(ctypes.util, "find_library", find_library)
+    out = run_answer_file(write(tmp_path, "L = 1\n"), ["L"], FAST)
+    assert out.status == "ok" and decode_value(out.values["L"]) == 1
+    assert not marker.exists()

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import ast
 import builtins
+import functools
 import json
 import math
 import os
@@ -158,6 +159,12 @@ def _prepare_parent() -> None:
     import sympy.assumptions.wrapper  # noqa: F401
     import sympy.sets.setexpr  # noqa: F401
     import sympy.tensor.tensor  # noqa: F401
+
+    try:
+        _libc()
+    except OSError:  # no libc to load: the child skips what needs it, as it did before
+        pass
+    _readable_dirs()
 
     _prepared = True
 
@@ -328,8 +335,11 @@ class _CappedWriter:
         return False
 
 
+@functools.cache
 def _readable_dirs() -> tuple[str, ...]:
-    """Python's own install, site-packages and our packages: the only places the child may read."""
+    """Python's own install, site-packages and our packages: the only places the child may read.
+
+    Resolved once, in the parent (``_prepare_parent``): ~1 ms of ``realpath`` per child otherwise."""
     paths = sysconfig.get_paths()
     dirs = {paths[k] for k in ("stdlib", "platstdlib", "purelib", "platlib") if paths.get(k)}
     for mod in (sp, lagrade.answer, _try_import("mpmath")):
@@ -362,7 +372,10 @@ def _under(path: str, dirs: Sequence[str]) -> bool:
     return any(path == d or path.startswith(d.rstrip(os.sep) + os.sep) for d in dirs)
 
 
+@functools.cache
 def _libc() -> Any:
+    """libc, loaded once in the parent (``_prepare_parent``): ``find_library`` runs ``ldconfig -p``
+    in a subprocess, which a child forked from a large grader paid twice, ~4 ms per answer."""
     import ctypes
     import ctypes.util
 
