@@ -22,7 +22,9 @@ would, on an evenly spread sample of the files. Both use the disk cache, built f
 from __future__ import annotations
 
 import argparse
+import hashlib
 import os
+import resource
 import shutil
 import sqlite3
 import statistics
@@ -87,15 +89,22 @@ def _tree_rss(root_pid: int) -> int:
     return total
 
 
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def run_grade(lagrade: list[str], root: Path, hw: Path, db: Path, workers: int,
-              extra: tuple[str, ...] = (), memory: bool = True) -> tuple[float, int]:
-    """Wall seconds and peak resident bytes (0 unless ``memory``) of one ``lagrade grade`` run.
+              extra: tuple[str, ...] = (), memory: bool = True) -> tuple[float, int, float]:
+    """Wall seconds, peak resident bytes (0 unless ``memory``) and CPU seconds of one ``lagrade grade``
+    run; the CPU time is that of the run and every process it started (graders, sandbox children).
 
     Sampling reads /proc/PID/smaps_rollup of every process of the run every 20 ms: on 2 cores that
     takes CPU time from the graders (a class run measured 17.3 s sampled and 13-15 s not), so the
     timed runs do not sample and the peak comes from a run of its own."""
     cmd = [*lagrade, "grade", str(root), "--assignment", str(hw), "--db", str(db), "--workers", str(workers),
            "--no-summary", "--no-progress", *extra]
+    cpu = _children_cpu()
     start = time.perf_counter()
     proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     peak = 0
@@ -115,7 +124,48 @@ def run_grade(lagrade: list[str], root: Path, hw: Path, db: Path, workers: int,
     sampler.join()
     if proc.returncode not in (0, 1):
         raise SystemExit(f"lagrade grade failed ({proc.returncode}): {err.decode()[-2000:]}")
-    return seconds, peak
+    return seconds, peak, _children_cpu() - cpu
+
+
+OWN = """
+import os, sys, time
+from pathlib import Path
+from lagrade.bulk.worker import Grader
+from lagrade.library import problem_path
+Grader({sys.argv[1]: Path(problem_path(sys.argv[1])).read_text()})
+for name in sys.argv[2:]:
+    source = Path(name).read_bytes()
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:
+        sys.stdout = open(os.devnull, "w")
+        start = time.process_time()
+        try:
+            exec(compile(source, name, "exec"), {"__name__": "__answer__"})
+        except BaseException:
+            pass
+        os.write(w, str(time.process_time() - start).encode())
+        os._exit(0)
+    os.close(w)
+    os.waitpid(pid, 0)
+    print(os.read(r, 100).decode() or 0, flush=True)
+"""
+
+
+def own_code_seconds(problem: str, files: list[Path], repeats: int = 3) -> float:
+    """What the answers' own code costs: the CPU time of each distinct Python file run plainly (no
+    sandbox, no grading) in a child forked from a warmed grader, as the sandbox forks it; the median
+    of ``repeats``, times the number of copies. No grader can take less: it is the part of a class's
+    time that grading cannot remove."""
+    counts: dict[str, list] = {}
+    for f in files:
+        if f.suffix == ".py":
+            counts.setdefault(hashlib.sha256(f.read_bytes()).hexdigest(), [f, 0])[1] += 1
+    distinct = [str(f) for f, _ in counts.values()] * repeats
+    out = subprocess.run([sys.executable, "-c", OWN, problem, *distinct], capture_output=True, text=True, check=True)
+    seconds = [float(x) for x in out.stdout.split()]
+    per_file = [statistics.median(seconds[i::len(counts)]) for i in range(len(counts))]
+    return sum(s * k for s, (_, k) in zip(per_file, counts.values()))
 
 
 def check_grades(db: Path, expected: list, problem: str) -> int:
@@ -145,7 +195,7 @@ def main() -> None:
         if args.memory:
             for size in (int(s) for s in args.memory.split(",")):
                 root, hw, expected = make(tmp / f"m{size}", size, args.problem)
-                seconds, peak = run_grade(lagrade, root, hw, tmp / f"m{size}.sqlite", args.workers)
+                seconds, peak, _ = run_grade(lagrade, root, hw, tmp / f"m{size}.sqlite", args.workers)
                 wrong = check_grades(tmp / f"m{size}.sqlite", expected, args.problem)
                 print(f"{len(expected):5d} submissions: {seconds:6.1f} s, peak memory (PSS) "
                       f"{peak / 2**20:6.0f} MiB (lagrade grade and all its processes); {wrong} graded unexpectedly",
@@ -159,17 +209,19 @@ def main() -> None:
             kinds["broken" if e.expect is None else ("right" if all(v == 1.0 for v in e.expect.values()) else "wrong")] += 1
         print(f"class: {n} submissions of {args.problem} ({kinds['right']} right, {kinds['wrong']} wrong, "
               f"{kinds['broken']} broken), {args.workers} workers, {os.cpu_count()} cores")
-        times = []
+        times, cpus = [], []
         for i in range(args.repeats):
             db = tmp / f"pool{i}.sqlite"
-            seconds, _ = run_grade(lagrade, root, hw, db, args.workers, memory=False)
+            seconds, _, cpu = run_grade(lagrade, root, hw, db, args.workers, memory=False)
             wrong = check_grades(db, expected, args.problem)
             times.append(seconds)
-            print(f"  lagrade grade: {n} in {seconds:.1f} s, {wrong} graded unexpectedly", flush=True)
-        pool = statistics.median(times)
+            cpus.append(cpu)
+            print(f"  lagrade grade: {n} in {seconds:.1f} s ({cpu:.1f} s of CPU), {wrong} graded unexpectedly",
+                  flush=True)
+        pool, cpu = statistics.median(times), statistics.median(cpus)
         print(f"lagrade grade (median of {args.repeats}): {pool:.1f} s = {n / pool * 60:.0f} per minute "
               f"(target: under 60 s)")
-        seconds, peak = run_grade(lagrade, root, hw, tmp / "memory.sqlite", args.workers)
+        seconds, peak, _ = run_grade(lagrade, root, hw, tmp / "memory.sqlite", args.workers)
         print(f"  peak memory (PSS, a run of its own sampled every 20 ms): {peak / 2**20:.0f} MiB "
               f"(that run: {seconds:.1f} s)")
 
@@ -196,6 +248,12 @@ def main() -> None:
         base = (time.perf_counter() - t) / len(sample)
         print(f"one `lagrade check` per file: {base:.2f} s per file ({len(sample)} files)")
         print(f"ratio: lagrade grade is {base * n / pool:.1f}x the throughput of one check per file (target >= 20x)")
+        own = own_code_seconds(args.problem, files)
+        print(f"where the CPU goes: lagrade grade used {cpu:.1f} s of CPU (median run; it and all its processes) "
+              f"on {os.cpu_count()} cores in {pool:.1f} s; the answers' own code takes {own:.1f} s of it "
+              f"(each file run alone in a fork of a warmed grader), which leaves {(cpu - own) / n * 1000:.0f} ms of CPU per "
+              f"file for lagrade (starting the graders, the sandbox, reading, checking, the gradebook). 20x "
+              f"would be the class in {base * n / 20:.1f} s, about {base * n / 20 * os.cpu_count():.1f} s of CPU.")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
