@@ -15,8 +15,10 @@ than by the grader. The grades are checked against the expected ones. ``lagrade 
 its own process, as an instructor runs it; its peak memory is the largest sum of the proportional set sizes
 (PSS) of it and all its descendants (graders and sandbox children), sampled every 20 ms from /proc.
 The baseline runs ``lagrade check PROBLEM FILE --json`` in a fresh process per file, as a script
-would, on an evenly spread sample of the files. Both use the disk cache, built first with
-``lagrade cache build`` (what an instructor runs once).
+would: once for each distinct file of the class, weighted by its number of copies, which is the
+class's mean without checking all 200. Each repeat runs the pool, then the baseline, so that both
+see the same machine load; the ratio is the median of the repeats' ratios. Both use the disk cache,
+built first with ``lagrade cache build`` (what an instructor runs once).
 """
 
 from __future__ import annotations
@@ -152,15 +154,12 @@ for name in sys.argv[2:]:
 """
 
 
-def own_code_seconds(problem: str, files: list[Path], repeats: int = 3) -> float:
+def own_code_seconds(problem: str, copies: dict[str, list], repeats: int = 3) -> float:
     """What the answers' own code costs: the CPU time of each distinct Python file run plainly (no
     sandbox, no grading) in a child forked from a warmed grader, as the sandbox forks it; the median
-    of ``repeats``, times the number of copies. No grader can take less: it is the part of a class's
-    time that grading cannot remove."""
-    counts: dict[str, list] = {}
-    for f in files:
-        if f.suffix == ".py":
-            counts.setdefault(hashlib.sha256(f.read_bytes()).hexdigest(), [f, 0])[1] += 1
+    of ``repeats``, times the number of copies (``copies``: content hash -> [file, count]). No grader
+    can take less: it is the part of a class's time that grading cannot remove."""
+    counts = {key: fk for key, fk in copies.items() if fk[0].suffix == ".py"}
     distinct = [str(f) for f, _ in counts.values()] * repeats
     out = subprocess.run([sys.executable, "-c", OWN, problem, *distinct], capture_output=True, text=True, check=True)
     seconds = [float(x) for x in out.stdout.split()]
@@ -183,7 +182,6 @@ def main() -> None:
     ap.add_argument("--size", type=int, default=200)
     ap.add_argument("--workers", type=int, default=os.cpu_count())
     ap.add_argument("--repeats", type=int, default=3, help="runs of the pool; the median is reported")
-    ap.add_argument("--baseline-sample", type=int, default=20, help="files for the one-at-a-time baseline (0: all)")
     ap.add_argument("--memory", default="", help="comma-separated class sizes: peak memory of each (e.g. 200,1000)")
     ap.add_argument("--dask", action="store_true", help="also grade on a Dask LocalCluster")
     args = ap.parse_args()
@@ -209,18 +207,35 @@ def main() -> None:
             kinds["broken" if e.expect is None else ("right" if all(v == 1.0 for v in e.expect.values()) else "wrong")] += 1
         print(f"class: {n} submissions of {args.problem} ({kinds['right']} right, {kinds['wrong']} wrong, "
               f"{kinds['broken']} broken), {args.workers} workers, {os.cpu_count()} cores")
-        times, cpus = [], []
+        files = [root / e.student / next(p.name for p in (root / e.student).iterdir() if p.stem == e.problem)
+                 for e in expected]
+        copies: dict[str, list] = {}
+        for f in files:
+            copies.setdefault(hashlib.sha256(f.read_bytes()).hexdigest(), [f, 0])[1] += 1
+        times, cpus, bases, ratios = [], [], [], []
         for i in range(args.repeats):
             db = tmp / f"pool{i}.sqlite"
             seconds, _, cpu = run_grade(lagrade, root, hw, db, args.workers, memory=False)
             wrong = check_grades(db, expected, args.problem)
+            check = {}
+            for key, (f, _) in copies.items():
+                t = time.perf_counter()
+                subprocess.run([*lagrade, "check", f.stem, str(f), "--json"], capture_output=True, check=False)
+                check[key] = time.perf_counter() - t
+            base = sum(check[key] * k for key, (_, k) in copies.items()) / n
             times.append(seconds)
             cpus.append(cpu)
-            print(f"  lagrade grade: {n} in {seconds:.1f} s ({cpu:.1f} s of CPU), {wrong} graded unexpectedly",
+            bases.append(base)
+            ratios.append(base * n / seconds)
+            print(f"  lagrade grade: {n} in {seconds:.1f} s ({cpu:.1f} s of CPU), {wrong} graded unexpectedly; "
+                  f"one check per file: {base:.2f} s (the {len(copies)} distinct files); ratio {ratios[-1]:.1f}x",
                   flush=True)
-        pool, cpu = statistics.median(times), statistics.median(cpus)
+        pool, cpu, base = statistics.median(times), statistics.median(cpus), statistics.median(bases)
         print(f"lagrade grade (median of {args.repeats}): {pool:.1f} s = {n / pool * 60:.0f} per minute "
               f"(target: under 60 s)")
+        print(f"one `lagrade check` per file: {base:.2f} s (median)")
+        print(f"ratio: lagrade grade is {statistics.median(ratios):.1f}x the throughput of one check per file "
+              f"(median of the repeats' ratios; target >= 20x)")
         seconds, peak, _ = run_grade(lagrade, root, hw, tmp / "memory.sqlite", args.workers)
         print(f"  peak memory (PSS, a run of its own sampled every 20 ms): {peak / 2**20:.0f} MiB "
               f"(that run: {seconds:.1f} s)")
@@ -239,21 +254,15 @@ def main() -> None:
                 print(f"Dask LocalCluster ({r.workers} workers x 1 thread): {n} in {dask:.1f} s "
                       f"(cluster already up; includes warming its graders)")
 
-        files = [root / e.student / next(p.name for p in (root / e.student).iterdir() if p.stem == e.problem)
-                 for e in expected]
-        sample = files if args.baseline_sample <= 0 else files[:: max(1, len(files) // args.baseline_sample)]
-        t = time.perf_counter()
-        for f in sample:
-            subprocess.run([*lagrade, "check", f.stem, str(f), "--json"], capture_output=True, check=False)
-        base = (time.perf_counter() - t) / len(sample)
-        print(f"one `lagrade check` per file: {base:.2f} s per file ({len(sample)} files)")
-        print(f"ratio: lagrade grade is {base * n / pool:.1f}x the throughput of one check per file (target >= 20x)")
-        own = own_code_seconds(args.problem, files)
-        print(f"where the CPU goes: lagrade grade used {cpu:.1f} s of CPU (median run; it and all its processes) "
-              f"on {os.cpu_count()} cores in {pool:.1f} s; the answers' own code takes {own:.1f} s of it "
-              f"(each file run alone in a fork of a warmed grader), which leaves {(cpu - own) / n * 1000:.0f} ms of CPU per "
-              f"file for lagrade (starting the graders, the sandbox, reading, checking, the gradebook). 20x "
-              f"would be the class in {base * n / 20:.1f} s, about {base * n / 20 * os.cpu_count():.1f} s of CPU.")
+        own = own_code_seconds(args.problem, copies)
+        cores = os.cpu_count() or 1
+        budget = base * n / 20 * cores
+        print(f"where the CPU goes (median run): lagrade grade and all its processes used {cpu:.1f} s of CPU on "
+              f"{cores} cores; the answers' own code, each distinct file run alone in a fork of a warmed grader, "
+              f"takes {own:.1f} s of that; lagrade's share is {cpu - own:.1f} s = {(cpu - own) / n * 1000:.0f} ms "
+              f"per file (starting the graders included). At 20x the class would take {base * n / 20:.1f} s, at "
+              f"most {budget:.1f} s of CPU on {cores} cores, which leaves {(budget - own) / n * 1000:.0f} ms per "
+              f"file for lagrade.")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
