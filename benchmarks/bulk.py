@@ -53,7 +53,10 @@ def make(tmp: Path, size: int, problem: str) -> tuple[Path, Path, list]:
             break
         students += max(1, size - len(expected))
     hw = tmp / "hw.toml"
-    hw.write_text(classgen.assignment_toml([problem]))
+    # lagrade's default limits, as an instructor's assignment has them: the tests' 1 s of CPU (which
+    # keeps their hostile files quick) is within reach of a correct answer that solves for the normal
+    # modes (0.4-0.6 s) when the machine is loaded, and would fail it
+    hw.write_text(classgen.assignment_toml([problem], cpu=10, wall=20))
     return root, hw, expected
 
 
@@ -168,12 +171,22 @@ def own_code_seconds(problem: str, copies: dict[str, list], repeats: int = 3) ->
 
 
 def check_grades(db: Path, expected: list, problem: str) -> int:
-    """How many submissions got a score other than the one known by construction."""
+    """How many submissions got a score other than the one known by construction; each is printed
+    with its parts' verdicts, so that a surprise can be looked into."""
     weights = classgen.part_weights(problem)
     con = sqlite3.connect(db)
-    rows = dict(((s, p), score) for s, p, score in con.execute("SELECT student, problem, score FROM submissions"))
+    rows = dict(((s, p), (score, status, reason)) for s, p, score, status, reason in
+                con.execute("SELECT student, problem, score, status, reason FROM submissions"))
+    wrong = [e for e in expected if abs(rows.get((e.student, e.problem), (-1,))[0] - e.score(weights)) > 1e-6]
+    for e in wrong:
+        score, status, reason = rows.get((e.student, e.problem), (None, "missing", ""))
+        print(f"    unexpected: {e.student} ({e.variant}) scored {score}, expected {e.score(weights)}; "
+              f"status {status} {reason[:200]}", flush=True)
+        for part, verdict, feedback in con.execute(
+                "SELECT part, verdict, feedback FROM parts WHERE student = ? AND problem = ?", (e.student, e.problem)):
+            print(f"      {part}: {verdict}: {feedback[:300]}", flush=True)
     con.close()
-    return sum(1 for e in expected if abs(rows.get((e.student, e.problem), -1) - e.score(weights)) > 1e-6)
+    return len(wrong)
 
 
 def main() -> None:
