@@ -39,7 +39,7 @@ import sympy as sp
 from pydantic import BaseModel, ConfigDict, ValidationError
 
 import lagrade.answer
-from lagrade.answers.rebuild import EncodedValue
+from lagrade.answers.rebuild import EncodedValue, srepr_text
 from lagrade.answers.screen import (
     ALLOWED_MODULES_TEXT,
     FORBIDDEN_ATTRIBUTES,
@@ -771,7 +771,7 @@ def _encode(value: Any, depth: int) -> dict[str, Any]:
             return {"kind": "list", "items": [_encode(v, depth + 1) for v in value]}
         return {"kind": "list", "items": [_encode(list(r), depth + 1) for r in value.tolist()]}
     if isinstance(value, sp.Basic):
-        return {"kind": "expr", "srepr": sp.srepr(value)}
+        return {"kind": "expr", "srepr": srepr_text(value)}
     if isinstance(value, int):
         if value.bit_length() > 4000:
             raise _EncodeError("is an integer too large to grade")
