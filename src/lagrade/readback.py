@@ -13,9 +13,9 @@ import re
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
+from sympy.printing.latex import LatexPrinter
 from sympy.printing.precedence import PRECEDENCE
 from sympy.printing.pretty.pretty_symbology import greek_unicode
-from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
 MAX_CHARS = 1500
@@ -45,8 +45,6 @@ class _OneLine(StrPrinter):
 
     def _print_Mul(self, expr: sp.Mul) -> str:
         return super()._print_Mul(expr).replace("*", "·")
-
-
 
 
 def _clip(text: str) -> str:

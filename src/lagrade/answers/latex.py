@@ -27,9 +27,8 @@ tree; nothing is evaluated), between a pre-pass of our own and a rebuild with an
 
 from __future__ import annotations
 
-import functools
-
 import difflib
+import functools
 import re
 from collections.abc import Iterable, Sequence
 from typing import Any
