@@ -24,7 +24,7 @@ from typing import Any
 from lagrade.bulk.assignment import Assignment, check_against_problems
 from lagrade.bulk.layout import Layout, Submission, scan
 from lagrade.bulk.store import Key, Store
-from lagrade.bulk.worker import GraderProcess, WorkerDied, failed_result, hard_deadline
+from lagrade.bulk.worker import GraderProcess, WorkerDied, failed_result, hard_deadline, stop_all
 
 ResultCallback = Callable[[dict[str, Any]], None]
 
@@ -181,10 +181,9 @@ def run_local(jobs: Iterable[dict[str, Any]], sources: dict[str, str], workers: 
                     raise WorkerDied("a grader process did not warm up in 10 minutes")
     finally:
         for g in graders:
-            if g.job is None:
-                g.stop()
-            else:
+            if g.job is not None:
                 g.kill()
+        stop_all([g for g in graders if g.job is None])
 
 
 # =========================================================================== Dask
@@ -201,8 +200,7 @@ def _take(sources: dict[str, str]) -> GraderProcess:
     key = _sources_key(sources)
     with _DASK_LOCK:
         for other in [k for k in _DASK_IDLE if k != key]:  # another assignment's graders: retire them
-            for g in _DASK_IDLE.pop(other):
-                g.stop()
+            stop_all(_DASK_IDLE.pop(other))
         idle = _DASK_IDLE.setdefault(key, [])
         if idle:
             return idle.pop()
@@ -228,8 +226,7 @@ def dask_stop() -> int:
     with _DASK_LOCK:
         graders = [g for gs in _DASK_IDLE.values() for g in gs]
         _DASK_IDLE.clear()
-    for g in graders:
-        g.stop()
+    stop_all(graders)
     return len(graders)
 
 

@@ -395,11 +395,20 @@ class GraderProcess:
                 pass
 
     def stop(self) -> None:
-        self.close()  # EOF ends the loop
+        stop_all([self])
+
+
+def stop_all(graders: list[GraderProcess]) -> None:
+    """End idle grader processes: every pipe is closed before any is waited for, so that they wind
+    down side by side (one after another, the last of a class's graders added ~0.5 s per grader)."""
+    for g in graders:
+        g.close()  # EOF ends the loop
+    deadline = time.monotonic() + 10
+    for g in graders:
         try:
-            self.proc.wait(timeout=10)
+            g.proc.wait(timeout=max(0.0, deadline - time.monotonic()))
         except subprocess.TimeoutExpired:
-            self.kill()
+            g.kill()
 
 
 def hard_deadline(limits: dict[str, float]) -> float:
@@ -423,3 +432,8 @@ class _Duplex:
 
 if __name__ == "__main__":
     serve(_Duplex(int(sys.argv[1]), int(sys.argv[2])), sys.argv[3] == "1")
+    # everything is sent, saved and removed: skip the interpreter's teardown, which frees sympy's
+    # caches and the compiled references object by object (~0.45 s of CPU per grader process)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(0)

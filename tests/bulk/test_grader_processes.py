@@ -1,0 +1,59 @@
+"""Starting and stopping grader processes: what the coordinator relies on."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from lagrade.bulk.worker import GraderProcess, stop_all
+from lagrade.library import problem_path, reference_dir
+
+
+class _FakeProc:
+    def __init__(self, log: list, name: str) -> None:
+        self.log, self.name = log, name
+
+    def wait(self, timeout: float | None = None) -> int:
+        self.log.append(("wait", self.name))
+        return 0
+
+
+class _FakeGrader:
+    """Records the order in which `stop_all` closes and waits."""
+
+    def __init__(self, log: list, name: str) -> None:
+        self.log, self.name = log, name
+        self.proc = _FakeProc(log, name)
+
+    def close(self) -> None:
+        self.log.append(("close", self.name))
+
+    def kill(self) -> None:
+        self.log.append(("kill", self.name))
+
+
+def test_stop_all_closes_every_pipe_before_waiting_for_any():
+    # a grader winds down only once its pipe closes: waiting on the first before closing the second
+    # made a class's graders stop one after another
+    log: list = []
+    stop_all([_FakeGrader(log, "a"), _FakeGrader(log, "b"), _FakeGrader(log, "c")])
+    assert log == [("close", "a"), ("close", "b"), ("close", "c"), ("wait", "a"), ("wait", "b"), ("wait", "c")]
+
+
+def test_a_grader_process_saves_its_references_before_it_exits(tmp_path, monkeypatch):
+    # the process leaves with os._exit, skipping the interpreter's teardown: what it derived must
+    # already be on disk for the next run (or a `lagrade check`) to start warm
+    cache = tmp_path / "cache"
+    monkeypatch.setenv("LAGRADE_CACHE", str(cache))
+    answer = reference_dir() / "12.14" / "answer.py"
+    g = GraderProcess({"12.14": problem_path("12.14").read_text(encoding="utf-8")})
+    try:
+        g.wait_ready()
+        g.submit({"student": "s", "problem": "12.14", "suffix": ".py", "data": answer.read_bytes(),
+                  "accuracy": "default", "credit": None, "parts": [], "file_hash": "",
+                  "limits": {"cpu_seconds": 10, "wall_seconds": 20, "memory_mb": 300, "grading_seconds": 60}})
+        result = g.result(timeout=120)
+    finally:
+        g.stop()
+    assert result["outcome"] == "graded" and result["score"] == result["max_score"] > 0
+    assert g.proc.returncode == 0
+    assert [p.name.split("-")[0] for p in Path(cache).glob("*.pkl")] == ["12.14"]
