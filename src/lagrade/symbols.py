@@ -57,15 +57,19 @@ def plain_symbols(expr: sp.Basic) -> sp.Basic:
 
 
 def to_state(expr: sp.Basic, names: Sequence[str], max_order: int = 2, momenta_too: bool = False) -> sp.Basic:
-    """Replace ``q(t)`` and its derivatives by ``q``, ``q_d``, ``q_dd``.
+    """Replace ``q(t)`` and its derivatives by ``q``, ``q_d``, ``q_dd``, and symbols with assumptions
+    by plain ones (`plain_symbols`), in one `xreplace`: each pass rebuilds the whole expression.
 
     With ``momenta_too`` the same is done for ``p_q(t)`` (Hamilton's equations use ``p_q_d``).
     Raises `NotationError` for unknown functions or derivatives of too high an order.
     """
-    expr = plain_symbols(sp.sympify(expr))
+    expr = sp.sympify(expr)
     known = set(names) | ({f"p_{n}" for n in names} if momenta_too else set())
-    mapping: dict[sp.Basic, sp.Basic] = {}
-    for d in expr.atoms(sp.Derivative):
+    plain = {s: sp.Symbol(s.name) for s in expr.free_symbols if isinstance(s, sp.Symbol) and s.assumptions0}
+    # keys are the expression's own nodes; the checks read them with plain symbols (t, real=True is t)
+    mapping: dict[sp.Basic, sp.Basic] = dict(plain)
+    for node in expr.atoms(sp.Derivative):
+        d = node.xreplace(plain) if plain else node
         f = d.expr
         if not (isinstance(f, AppliedUndef) and f.args == (T,) and f.func.__name__ in known):
             raise NotationError(f"cannot read the derivative {d}: differentiate a coordinate, as {names[0]}(t).diff(t)"
@@ -75,16 +79,15 @@ def to_state(expr: sp.Basic, names: Sequence[str], max_order: int = 2, momenta_t
         order = sum(c for _, c in d.variable_count)
         if order > max_order:
             raise NotationError(f"{d} is a derivative of order {order}; at most {max_order} is expected here")
-        mapping[d] = sp.Symbol(f.func.__name__ + ("_d" if order == 1 else "_dd"))
-    expr = expr.xreplace(mapping) if mapping else expr
-    funcs = {}
-    for f in expr.atoms(AppliedUndef):
+        mapping[node] = sp.Symbol(f.func.__name__ + ("_d" if order == 1 else "_dd"))
+    for node in expr.atoms(AppliedUndef):
+        f = node.xreplace(plain) if plain else node
         name = f.func.__name__
         if name in known and f.args == (T,):
-            funcs[f] = sp.Symbol(name)
+            mapping[node] = sp.Symbol(name)
         else:
             raise NotationError(f"unknown function {f}; coordinates are {', '.join(f'{n}(t)' for n in names)}")
-    return expr.xreplace(funcs) if funcs else expr
+    return expr.xreplace(mapping) if mapping else expr
 
 
 def unknown_names(expr: sp.Basic, allowed: Iterable[str]) -> list[str]:
