@@ -47,6 +47,7 @@ class Mechanics:
         self._parsed: dict[tuple, sp.Expr] = {}
         self._points: dict[tuple, object] = {}
         self.runs: dict[tuple, tuple] = {}  # reference integrations (lagrade.compare.trajectory)
+        self.linearized: dict[tuple, tuple] = {}  # the EL rows' linear parts (checkers.dynamics)
         self._rows_of: dict[sp.Expr, list[sp.Expr]] = {}  # answers' Lagrange equations (not kept on disk)
         self.all_names = tuple(c.name for c in system.coordinates)
         self.names = tuple(c.name for c in system.free_coordinates)
@@ -233,7 +234,7 @@ class ReferenceCache:
 
     def size(self) -> int:
         """How much has been derived: grows whenever something new is (the disk cache's dirty check)."""
-        return sum(1 + len(m.__dict__) + len(m._parsed) + len(m._points) + len(m.runs)
+        return sum(1 + len(m.__dict__) + len(m._parsed) + len(m._points) + len(m.runs) + len(m.linearized)
                    for m in self.systems.values())
 
     def __getstate__(self) -> dict:

@@ -440,7 +440,10 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
         return jac.reshape(len(exprs), 3 * n, pts.K), evaluate(exprs, args, at_eq)
 
     A_s, g0 = linear_part(rows)
-    A_r, g0_r = linear_part(mech.EL)
+    key = (part.name, tuple(part.symbols))  # the states above depend on nothing else
+    if key not in mech.linearized:
+        mech.linearized[key] = linear_part(mech.EL)
+    A_r, g0_r = mech.linearized[key]
     # Affine rows [d/d(state) | value at equilibrium]: a driven system keeps its forcing term.
     consistent = []
     for i in range(len(rows)):
