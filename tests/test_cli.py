@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -135,3 +136,21 @@ def test_read_back_in_latex_keeps_powers_of_coordinates_and_their_derivatives():
     assert as_latex(th.diff(t, 3)) == r"\theta_{1}^{(3)}" and as_unicode(th.diff(t, 3)) == "θ₁^(3)"
     assert as_latex(sp.Eq(th.diff(t, 2), -sp.sin(th))) == r"\ddot{\theta_{1}} = - \sin{\left(\theta_{1} \right)}"
     assert as_unicode(sp.cos(th - sp.Function("theta2")(t))) == "cos(θ₁ - θ₂)"
+
+
+@pytest.mark.parametrize("answer, code", [("reference", 0), ("wrong", 1), ("broken", 2)])
+def test_a_check_in_its_own_process_exits_with_its_code_and_all_its_output(answer, code, tmp_path):
+    # `python -m lagrade` leaves without the interpreter's teardown: the exit code and every byte of
+    # the output (through a pipe, which Python buffers) must still come out
+    files = {"reference": REF / "12.14" / "answer.py",
+             "wrong": ROOT / "tests" / "answers" / "12.14" / "wrong_missing_cross_term.py",
+             "broken": tmp_path / "broken.py"}
+    files["broken"].write_text("L = (\n")
+    buffered = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}
+    proc = subprocess.run([sys.executable, "-m", "lagrade", "check", "12.14", str(files[answer]), "--json"],
+                          capture_output=True, text=True, timeout=120, env=buffered)
+    assert proc.returncode == code, proc.stderr
+    result = json.loads(proc.stdout)
+    assert [p["part"] for p in result["parts"]] == ["L", "eom", "eom_exact", "omega"]
+    assert (result["score"] == result["max_score"]) == (code == 0)
+    assert all(p["verdict"] == "invalid" for p in result["parts"]) == (code == 2)

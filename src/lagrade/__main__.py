@@ -1,3 +1,3 @@
-from lagrade.cli import main
+from lagrade.cli import run
 
-main()
+run()
