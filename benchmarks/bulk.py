@@ -7,11 +7,14 @@ submissions (200 against 1000).
     python benchmarks/bulk.py                        # 200 submissions of 12.14, pool and baseline
     python benchmarks/bulk.py --memory 200,1000      # peak memory at each class size
     python benchmarks/bulk.py --dask                 # also a Dask LocalCluster run
+    python benchmarks/bulk.py --distinct             # no two Python answers with the same values
 
 The class is generated like the tests' (tests/bulk/classgen.py): the reference solution, equivalent
 rewrites, golden correct and wrong answers (typical mistakes) and broken files (syntax error, name
 error, empty, not UTF-8, bad TOML); no hostile files, whose cost is set by the time limits rather
-than by the grader. The grades are checked against the expected ones. ``lagrade grade`` runs as
+than by the grader. It copies 15 distinct files, so what lagrade caches by content (compiled rates,
+MathML) is reused more than in a real class: ``--distinct`` gives every Python answer values of
+its own, with the same grades. The grades are checked against the expected ones. ``lagrade grade`` runs as
 its own process, as an instructor runs it; its peak memory is the largest sum of the proportional set sizes
 (PSS) of it and all its descendants (graders and sandbox children), sampled every 20 ms from /proc.
 The baseline runs ``lagrade check PROBLEM FILE --json`` in a fresh process per file, as a script
@@ -58,6 +61,35 @@ def make(tmp: Path, size: int, problem: str) -> tuple[Path, Path, list]:
     # modes (0.4-0.6 s) when the machine is loaded, and would fail it
     hw.write_text(classgen.assignment_toml([problem], cpu=10, wall=20))
     return root, hw, expected
+
+
+def make_distinct(root: Path, problem: str) -> int:
+    """Give every Python answer values of its own: the generated class copies 15 files, so caches
+    keyed by content (compiled rates per equation, MathML per answer text, sympy's own) hit far more
+    often than in a real class. L gets a total time derivative d/dt(c P q) and every equation of
+    motion is multiplied by c, with c = k/(k+1) unique per file: the grades stay the same. Returns
+    the number of files changed."""
+    import re
+
+    from lagrade.library import load_problem
+
+    spec = load_problem(problem)
+    system = spec.systems[0]
+    q, par = system.coordinates[0].name, spec.parameters_of(system.key)[0].name
+    changed = 0
+    for k, f in enumerate(sorted(root.rglob("*.py")), start=2):
+        src = f.read_text(encoding="utf-8", errors="replace")
+        lines = ["", "import sympy as spx", f"c_ = spx.Rational({k}, {k + 1})"]
+        if re.search(r"^L\s*=", src, re.M):
+            lines.append(f"L = L + c_ * spx.Symbol('{par}') * spx.Function('{q}')(spx.Symbol('t')).diff(spx.Symbol('t'))")
+        for part in spec.parts:
+            if part.kind == "eom" and re.search(rf"^{part.name}\s*=", src, re.M):
+                lines.append(f"{part.name} = [spx.Eq(r.lhs * c_, r.rhs * c_) if isinstance(r, spx.Equality) "
+                             f"else c_ * r for r in {part.name}]")
+        if len(lines) > 3:
+            f.write_text(src + "\n".join(lines) + "\n", encoding="utf-8")
+            changed += 1
+    return changed
 
 
 def _pss(pid: int) -> int:
@@ -197,6 +229,9 @@ def main() -> None:
     ap.add_argument("--repeats", type=int, default=3, help="runs of the pool; the median is reported")
     ap.add_argument("--memory", default="", help="comma-separated class sizes: peak memory of each (e.g. 200,1000)")
     ap.add_argument("--dask", action="store_true", help="also grade on a Dask LocalCluster")
+    ap.add_argument("--distinct", action="store_true",
+                    help="no two Python answers share a value (see make_distinct); the baseline then checks "
+                         "every file once")
     args = ap.parse_args()
     script = Path(sys.executable).with_name("lagrade")
     lagrade = [str(script)] if script.exists() else [sys.executable, "-m", "lagrade"]
@@ -214,6 +249,8 @@ def main() -> None:
             return
 
         root, hw, expected = make(tmp, args.size, args.problem)
+        if args.distinct:
+            print(f"--distinct: {make_distinct(root, args.problem)} Python answers changed to values of their own")
         n = len(expected)
         kinds = {"right": 0, "wrong": 0, "broken": 0}
         for e in expected:
