@@ -400,7 +400,7 @@ class GraderProcess:
 
 def stop_all(graders: list[GraderProcess]) -> None:
     """End idle grader processes: every pipe is closed before any is waited for, so that they wind
-    down side by side (one after another, the last of a class's graders added ~0.5 s per grader)."""
+    down side by side (stopped one after another, each added about 0.5 s to the end of a class)."""
     for g in graders:
         g.close()  # EOF ends the loop
     deadline = time.monotonic() + 10
