@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 
 from lagrade.bulk.worker import GraderProcess, stop_all
@@ -30,13 +31,17 @@ class _FakeGrader:
     def kill(self) -> None:
         self.log.append(("kill", self.name))
 
+    def remove_dir(self) -> None:
+        self.log.append(("remove", self.name))
+
 
 def test_stop_all_closes_every_pipe_before_waiting_for_any():
     # a grader winds down only once its pipe closes: waiting on the first before closing the second
     # made a class's graders stop one after another
     log: list = []
     stop_all([_FakeGrader(log, "a"), _FakeGrader(log, "b"), _FakeGrader(log, "c")])
-    assert log == [("close", "a"), ("close", "b"), ("close", "c"), ("wait", "a"), ("wait", "b"), ("wait", "c")]
+    assert log == [("close", "a"), ("close", "b"), ("close", "c"),
+                   ("wait", "a"), ("remove", "a"), ("wait", "b"), ("remove", "b"), ("wait", "c"), ("remove", "c")]
 
 
 def test_a_grader_process_saves_its_references_before_it_exits(tmp_path, monkeypatch):
@@ -57,3 +62,29 @@ def test_a_grader_process_saves_its_references_before_it_exits(tmp_path, monkeyp
     assert result["outcome"] == "graded" and result["score"] == result["max_score"] > 0
     assert g.proc.returncode == 0
     assert [p.name.split("-")[0] for p in Path(cache).glob("*.pkl")] == ["12.14"]
+
+
+def test_a_killed_grader_leaves_no_files_behind(tmp_path):
+    # its folder holds the problems and the submission it was grading: the coordinator made it, and
+    # removes it, since a process killed mid-job cannot
+    loop = tmp_path / "loop.py"
+    loop.write_text("x = 0\nwhile True:\n    x += 1\n")
+    g = GraderProcess({"12.14": problem_path("12.14").read_text(encoding="utf-8")})
+    g.wait_ready()
+    g.submit({"student": "s", "problem": "12.14", "suffix": ".py", "data": loop.read_bytes(),
+              "accuracy": "default", "credit": None, "parts": [], "file_hash": "",
+              "limits": {"cpu_seconds": 10, "wall_seconds": 20, "memory_mb": 300, "grading_seconds": 60}})
+    deadline = time.monotonic() + 60
+    while not list(Path(g.dir).glob("lagrade-job-*/12.14.py")) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert list(Path(g.dir).glob("lagrade-job-*/12.14.py")), "the grader never wrote the job's file"
+    g.kill()
+    assert not Path(g.dir).exists()
+
+
+def test_a_stopped_grader_leaves_no_files_behind():
+    g = GraderProcess({"12.14": problem_path("12.14").read_text(encoding="utf-8")})
+    g.wait_ready()
+    assert (Path(g.dir) / "problems" / "12.14.toml").is_file()
+    g.stop()
+    assert g.proc.returncode == 0 and not Path(g.dir).exists()

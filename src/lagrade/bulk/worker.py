@@ -38,12 +38,14 @@ class _GradingOutOfTime(BaseException):
 class Grader:
     """The warmed state of a grader process: problems loaded, references derived."""
 
-    def __init__(self, problems: dict[str, str]) -> None:
+    def __init__(self, problems: dict[str, str], directory: str | None = None) -> None:
+        """``directory``: where the problems and each job's file go (made here if not given); the
+        coordinator makes it, so that it can remove it when it has to kill this process."""
         from lagrade.grade import references
         from lagrade.library import load_problem
 
-        self.dir = Path(tempfile.mkdtemp(prefix="lagrade-grader-"))
-        (self.dir / "problems").mkdir()
+        self.dir = Path(directory) if directory else Path(tempfile.mkdtemp(prefix="lagrade-grader-"))
+        (self.dir / "problems").mkdir(exist_ok=True)
         self.problems = {}
         for pid, text in problems.items():
             path = self.dir / "problems" / f"{pid}.toml"
@@ -277,7 +279,7 @@ def serve(conn: Any, parent_death_signal: bool = True) -> None:
     except (EOFError, OSError):
         return
     try:
-        grader = Grader(hello["problems"])
+        grader = Grader(hello["problems"], hello.get("dir"))
         conn.send({"ready": True, "pid": os.getpid()})
     except Exception as exc:  # noqa: BLE001
         conn.send({"ready": False, "error": f"{type(exc).__name__}: {exc}"})
@@ -337,7 +339,10 @@ class GraderProcess:
         self.job: dict[str, Any] | None = None
         self.started = 0.0
         self.ready = False
-        self.send_conn.send({"problems": problems})
+        # the grader's files (the problems, each job's submission): removed by the grader when it
+        # stops, and here when it is killed or dies
+        self.dir = tempfile.mkdtemp(prefix="lagrade-grader-")
+        self.send_conn.send({"problems": problems, "dir": self.dir})
 
     @property
     def pid(self) -> int:
@@ -386,6 +391,10 @@ class GraderProcess:
             pass
         self.proc.wait()
         self.close()
+        self.remove_dir()
+
+    def remove_dir(self) -> None:
+        shutil.rmtree(self.dir, ignore_errors=True)
 
     def close(self) -> None:
         for c in (self.send_conn, self.recv_conn):
@@ -409,6 +418,7 @@ def stop_all(graders: list[GraderProcess]) -> None:
             g.proc.wait(timeout=max(0.0, deadline - time.monotonic()))
         except subprocess.TimeoutExpired:
             g.kill()
+        g.remove_dir()  # already gone unless the process failed before it could remove it
 
 
 def hard_deadline(limits: dict[str, float]) -> float:
