@@ -203,7 +203,6 @@ _MATHML: dict[tuple[str, str], str | None] = {}
 
 def _mathml(value: Any) -> str:
     import sympy as sp
-    from sympy.printing.mathml import mathml
 
     def one(v: Any) -> str:
         if isinstance(v, (list, tuple)):
