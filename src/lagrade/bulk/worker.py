@@ -322,9 +322,15 @@ class GraderProcess:
     """A grader process seen from the coordinator: start, warm, send a job, wait, kill."""
 
     def __init__(self, problems: dict[str, str], *, parent_death_signal: bool = True) -> None:
+        # Everything the grader writes: the problems, each job's submission, and (as its TMPDIR) the
+        # sandbox children's working folders. The grader removes it when it stops, and this side when
+        # the process is killed or dies. Traversable by others, as /tmp is, because a child that has
+        # become `nobody` still reaches its own working folder by its full path.
+        self.dir = tempfile.mkdtemp(prefix="lagrade-grader-")
+        os.chmod(self.dir, 0o711)
         down_r, down_w = os.pipe()   # coordinator -> grader
         up_r, up_w = os.pipe()       # grader -> coordinator
-        env = dict(os.environ)
+        env = {**os.environ, "TMPDIR": self.dir}
         debug = bool(env.get("LAGRADE_DEBUG"))
         self.proc = subprocess.Popen(
             [sys.executable, "-m", "lagrade.bulk.worker", str(down_r), str(up_w), "1" if parent_death_signal else "0"],
@@ -338,9 +344,6 @@ class GraderProcess:
         self.job: dict[str, Any] | None = None
         self.started = 0.0
         self.ready = False
-        # the grader's files (the problems, each job's submission): removed by the grader when it
-        # stops, and here when it is killed or dies
-        self.dir = tempfile.mkdtemp(prefix="lagrade-grader-")
         self.send_conn.send({"problems": problems, "dir": self.dir})
 
     @property
