@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+import stat
 import time
 from pathlib import Path
 
@@ -89,5 +91,8 @@ def test_a_stopped_grader_leaves_no_files_behind():
     g = GraderProcess({"12.14": problem_path("12.14").read_text(encoding="utf-8")})
     g.wait_ready()
     assert (Path(g.dir) / "problems" / "12.14.toml").is_file()
+    # the folder is traversable (a sandbox child reaches its working folder in it), what is in it is not
+    assert stat.S_IMODE(os.stat(g.dir).st_mode) == 0o711
+    assert stat.S_IMODE(os.stat(Path(g.dir) / "problems").st_mode) == 0o700
     g.stop()
     assert g.proc.returncode == 0 and not Path(g.dir).exists()

@@ -45,7 +45,7 @@ class Grader:
         from lagrade.library import load_problem
 
         self.dir = Path(directory) if directory else Path(tempfile.mkdtemp(prefix="lagrade-grader-"))
-        (self.dir / "problems").mkdir(exist_ok=True)
+        (self.dir / "problems").mkdir(mode=0o700, exist_ok=True)  # the folder itself is traversable
         self.problems = {}
         for pid, text in problems.items():
             path = self.dir / "problems" / f"{pid}.toml"
@@ -325,7 +325,8 @@ class GraderProcess:
         # Everything the grader writes: the problems, each job's submission, and (as its TMPDIR) the
         # sandbox children's working folders. The grader removes it when it stops, and this side when
         # the process is killed or dies. Traversable by others, as /tmp is, because a child that has
-        # become `nobody` still reaches its own working folder by its full path.
+        # become `nobody` still reaches its own working folder by its full path; everything in it is
+        # a folder of its own that only its owner can read (0700).
         self.dir = tempfile.mkdtemp(prefix="lagrade-grader-")
         os.chmod(self.dir, 0o711)
         down_r, down_w = os.pipe()   # coordinator -> grader
