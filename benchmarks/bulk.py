@@ -169,7 +169,7 @@ import os, sys, time
 from pathlib import Path
 from lagrade.bulk.worker import Grader
 from lagrade.library import problem_path
-Grader({sys.argv[1]: Path(problem_path(sys.argv[1])).read_text()})
+grader = Grader({sys.argv[1]: Path(problem_path(sys.argv[1])).read_text()})
 for name in sys.argv[2:]:
     source = Path(name).read_bytes()
     r, w = os.pipe()
@@ -186,6 +186,7 @@ for name in sys.argv[2:]:
     os.close(w)
     os.waitpid(pid, 0)
     print(os.read(r, 100).decode() or 0, flush=True)
+grader.close()  # its folder in /tmp
 """
 
 
