@@ -7,7 +7,7 @@ import stat
 import time
 from pathlib import Path
 
-from lagrade.bulk.worker import GraderProcess, stop_all
+from lagrade.bulk.worker import SYMPY_CACHE_ENTRIES, GraderProcess, grader_environment, stop_all
 from lagrade.library import problem_path, reference_dir
 
 
@@ -94,5 +94,18 @@ def test_a_stopped_grader_leaves_no_files_behind():
     # the folder is traversable (a sandbox child reaches its working folder in it), what is in it is not
     assert stat.S_IMODE(os.stat(g.dir).st_mode) == 0o711
     assert stat.S_IMODE(os.stat(Path(g.dir) / "problems").st_mode) == 0o700
+    environ = dict(kv.split("=", 1) for kv in Path(f"/proc/{g.pid}/environ").read_text().split("\0") if "=" in kv)
+    assert environ["TMPDIR"] == g.dir
+    assert environ["SYMPY_CACHE_SIZE"] == os.environ.get("SYMPY_CACHE_SIZE", str(SYMPY_CACHE_ENTRIES))
     g.stop()
     assert g.proc.returncode == 0 and not Path(g.dir).exists()
+
+
+def test_a_grader_gets_a_larger_sympy_cache_unless_one_is_set(monkeypatch):
+    # sympy's default (1000 entries per cache) loses the warm-up's expressions after one answer
+    monkeypatch.delenv("SYMPY_CACHE_SIZE", raising=False)
+    env = grader_environment("/somewhere")
+    assert env["TMPDIR"] == "/somewhere"
+    assert int(env["SYMPY_CACHE_SIZE"]) == SYMPY_CACHE_ENTRIES > 1000
+    monkeypatch.setenv("SYMPY_CACHE_SIZE", "500")  # an instructor's own choice wins
+    assert grader_environment("/somewhere")["SYMPY_CACHE_SIZE"] == "500"

@@ -318,6 +318,22 @@ class WorkerDied(RuntimeError):
     pass
 
 
+#: entries in each of sympy's LRU caches, in a grader process and so in the sandbox children forked
+#: from it. sympy's default, 1000, is too small for a grader: grading one answer evicts most of what
+#: the warm-up cached, and a child then re-derives the assumptions of every expression it builds
+#: (an answer that builds the double pendulum's L and equations ran in 40 ms instead of 14). With
+#: 20000, a class of 12.14 took 7-11% less CPU, for about 30 MB more per grader; an LRU, so bounded.
+SYMPY_CACHE_ENTRIES = 20000
+
+
+def grader_environment(directory: str) -> dict[str, str]:
+    """A grader's environment: this one's, with its folder as TMPDIR and a larger sympy cache (unless
+    SYMPY_CACHE_SIZE is set already; sympy reads it once, when it is imported)."""
+    env = {**os.environ, "TMPDIR": directory}
+    env.setdefault("SYMPY_CACHE_SIZE", str(SYMPY_CACHE_ENTRIES))
+    return env
+
+
 class GraderProcess:
     """A grader process seen from the coordinator: start, warm, send a job, wait, kill."""
 
@@ -331,7 +347,7 @@ class GraderProcess:
         os.chmod(self.dir, 0o711)
         down_r, down_w = os.pipe()   # coordinator -> grader
         up_r, up_w = os.pipe()       # grader -> coordinator
-        env = {**os.environ, "TMPDIR": self.dir}
+        env = grader_environment(self.dir)
         debug = bool(env.get("LAGRADE_DEBUG"))
         self.proc = subprocess.Popen(
             [sys.executable, "-m", "lagrade.bulk.worker", str(down_r), str(up_w), "1" if parent_death_signal else "0"],
