@@ -26,8 +26,6 @@ from typing import Any
 STATUSES = ("ok", "error", "syntax", "rejected", "timeout", "memory", "crashed", "grader-timeout",
             "grader-crash")
 
-MATHML_MAX_CHARS = 4000
-
 
 class _GradingOutOfTime(BaseException):
     """Raised by SIGPROF; a BaseException so that the engine's per-part guards do not swallow it."""
@@ -69,6 +67,7 @@ class Grader:
     def grade(self, job: dict[str, Any]) -> dict[str, Any]:
         from lagrade.answers.load import load_answer
         from lagrade.answers.sandbox import SandboxLimits
+        from lagrade.bulk.display import show
         from lagrade.credit import Credit
         from lagrade.grade import grade_values
 
@@ -86,12 +85,12 @@ class Grader:
                                                                memory_mb=limits["memory_mb"]))
             result = grade_values(problem, loaded, job["accuracy"],
                                   credit=Credit.model_validate(job["credit"]) if job.get("credit") else None,
-                                  read_as=())  # the gradebook keeps its own text and MathML (_show)
+                                  read_as=())  # the gradebook keeps its own text and MathML (display.show)
             parts = []
             for p in result.parts:
                 row = p.model_dump(exclude={"read_as"})
                 if p.part in loaded.values:
-                    row["answer_text"], row["answer_mathml"] = _show(loaded.values[p.part])
+                    row["answer_text"], row["answer_mathml"] = show(loaded.values[p.part])
                 parts.append(row)
         except _GradingOutOfTime:
             return failed_result(job, problem_parts(problem), "grader-timeout",
@@ -174,82 +173,6 @@ def _status(reason: str) -> str:
     if "not allowed" in r or "refused" in r or "larger than" in r:
         return "rejected"
     return "error"
-
-
-def _show(value: Any) -> tuple[str | None, str | None]:
-    """The value as text and as presentation MathML (None when too large or unprintable)."""
-    try:
-        text = str(value)
-    except Exception:  # noqa: BLE001
-        return None, None
-    if len(text) > MATHML_MAX_CHARS:
-        return text[:MATHML_MAX_CHARS] + " ...", None
-    key = (type(value).__name__, text)
-    if key in _MATHML:  # a class hands in many identical answers; sympy's MathML printer is slow
-        return text, _MATHML[key]
-    try:
-        rendered = _mathml(value)
-    except Exception:  # noqa: BLE001
-        rendered = None
-    if len(_MATHML) >= 1024:
-        _MATHML.pop(next(iter(_MATHML)))
-    _MATHML[key] = rendered
-    return text, rendered
-
-
-#: MathML by the answer's type and text (sympy's str), in this grader process
-_MATHML: dict[tuple[str, str], str | None] = {}
-
-
-def _mathml(value: Any) -> str:
-    import sympy as sp
-
-    def one(v: Any) -> str:
-        if isinstance(v, (list, tuple)):
-            return "<mrow><mo>[</mo>" + "<mo>,</mo>".join(one(x) for x in v) + "<mo>]</mo></mrow>"
-        if isinstance(v, dict):
-            items = [f"<mrow>{one(k) if not isinstance(k, str) else '<mi>' + _esc(k) + '</mi>'}<mo>:</mo>{one(x)}</mrow>"
-                     for k, x in v.items()]
-            return "<mrow><mo>{</mo>" + "<mo>,</mo>".join(items) + "<mo>}</mo></mrow>"
-        if isinstance(v, bool):
-            return f"<mi>{v}</mi>"
-        if isinstance(v, str):
-            return f"<mtext>{_esc(v)}</mtext>"
-        return _dotted_mathml(sp.sympify(v) if isinstance(v, (int, float)) else v)
-
-    return one(value)
-
-
-def _dotted_mathml(expr: Any) -> str:
-    """MathML with coordinates written as a physicist does: theta for theta(t), a dot for d/dt."""
-    import sympy as sp
-    from sympy.core.function import AppliedUndef
-    from sympy.printing.mathml import mathml
-
-    if not isinstance(expr, sp.Basic):
-        return mathml(expr, printer="presentation")
-    t = sp.Symbol("t")
-    marks = {1: "&#729;", 2: "&#168;"}
-    reps, shown = {}, {}
-    for i, d in enumerate(sorted(expr.atoms(sp.Derivative), key=str)):
-        n = d.derivative_count
-        f = d.expr
-        if isinstance(f, AppliedUndef) and f.args == (t,) and n in marks and all(v == t for v, _ in d.variable_count):
-            key = "lgdot" + "".join(chr(97 + int(c)) for c in str(i))
-            reps[d] = sp.Symbol(key)
-            base = mathml(sp.Symbol(f.func.__name__), printer="presentation")
-            shown[f"<mi>{key}</mi>"] = f"<mover accent=\"true\">{base}<mo>{marks[n]}</mo></mover>"
-    for f in expr.atoms(AppliedUndef):
-        if f.args == (t,):
-            reps.setdefault(f, sp.Symbol(f.func.__name__))
-    out = mathml(expr.xreplace(reps) if reps else expr, printer="presentation")
-    for k, v in shown.items():
-        out = out.replace(k, v)
-    return out
-
-
-def _esc(s: str) -> str:
-    return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
 def problem_parts(problem) -> list[tuple[str, float]]:

@@ -1,0 +1,140 @@
+"""How an answer is shown in the gradebook: exactly ``str`` as text; sympy's presentation MathML, with
+coordinates written q, q-dot and q-double-dot."""
+
+from __future__ import annotations
+
+import re
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from sympy.core.function import AppliedUndef
+from sympy.printing.mathml import mathml
+
+from lagrade.bulk import display
+from lagrade.bulk.display import MATHML_MAX_CHARS, show
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from expression_strategies import expressions  # noqa: E402
+
+t = sp.Symbol("t")
+m1, l1, g = sp.symbols("m1 l1 g", positive=True)
+th = sp.Function("theta1")(t)
+THETA1 = "<msub><mi>&#952;</mi><mi>1</mi></msub>"
+
+
+def _fresh(value):
+    display._MATHML.clear()  # each example printed, not found in the cache
+    return show(value)
+
+
+def _well_formed(markup: str) -> None:
+    # HTML's named entities (&InvisibleTimes;) are not XML's: the structure is what is checked
+    ET.fromstring("<math>" + re.sub(r"&[A-Za-z]+;", "&#63;", markup) + "</math>")
+
+
+SETTINGS = settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow], derandomize=True)
+
+
+@SETTINGS
+@given(expr=expressions)
+def test_text_is_str(expr):
+    text, _ = _fresh(expr)
+    assert text == str(expr)[:MATHML_MAX_CHARS] + (" ..." if len(str(expr)) > MATHML_MAX_CHARS else "")
+
+
+@SETTINGS
+@given(value=st.one_of(st.lists(expressions, max_size=3), st.tuples(expressions),
+                       st.dictionaries(st.sampled_from(["a", "omega_1"]), expressions, max_size=2),
+                       st.dictionaries(expressions, st.booleans(), max_size=2)))
+def test_text_of_containers_is_str(value):
+    assert _fresh(value)[0] == str(value)[:MATHML_MAX_CHARS] + (" ..." if len(str(value)) > MATHML_MAX_CHARS else "")
+
+
+@SETTINGS
+@given(expr=expressions.filter(lambda e: not e.atoms(AppliedUndef)))
+def test_mathml_without_coordinates_is_sympys(expr):
+    text, markup = _fresh(expr)
+    if len(text) <= MATHML_MAX_CHARS:
+        assert markup == mathml(expr, printer="presentation")
+
+
+@SETTINGS
+@given(expr=expressions)
+def test_mathml_is_well_formed_and_shows_no_coordinate_as_a_function_of_t(expr):
+    text, markup = _fresh(expr)
+    if len(text) > MATHML_MAX_CHARS:
+        assert markup is None
+        return
+    _well_formed(markup)
+    # q(t) is written q: sympy would print the function's name, then (t)
+    for q in expr.atoms(AppliedUndef):
+        assert f"<mi>{q.func.__name__}</mi><mrow><mo>(</mo>" not in markup
+
+
+@pytest.mark.parametrize("expr, expected", [
+    (th, THETA1),
+    (th.diff(t), f'<mover accent="true">{THETA1}<mo>&#729;</mo></mover>'),
+    (th.diff(t, 2), f'<mover accent="true">{THETA1}<mo>&#168;</mo></mover>'),
+    # a dotted coordinate is one symbol to the reader: no brackets around it in a power
+    (th.diff(t) ** 2, f'<msup><mover accent="true">{THETA1}<mo>&#729;</mo></mover><mn>2</mn></msup>'),
+    (sp.cos(th), f"<mrow><mi>cos</mi><mrow><mo>(</mo>{THETA1}<mo>)</mo></mrow></mrow>"),
+])
+def test_coordinates_are_written_as_a_physicist_does(expr, expected):
+    assert _fresh(expr)[1] == expected
+
+
+def test_a_third_derivative_and_other_functions_stay_as_sympy_writes_them():
+    third = _fresh(th.diff(t, 3))[1]
+    assert "<mover" not in third and "<msup><mo>&dd;</mo><mn>3</mn></msup>" in third and THETA1 in third
+    f = sp.Function("f")(t, g)  # a function of more than t is not a coordinate
+    assert _fresh(f)[1] == mathml(f, printer="presentation")
+    assert _fresh(sp.Derivative(f, g))[1] == mathml(sp.Derivative(f, g), printer="presentation")
+
+
+def test_an_equation_of_motion_in_the_gradebook():
+    eom = [sp.Eq(m1 * l1**2 * th.diff(t, 2), -m1 * g * l1 * sp.sin(th))]
+    text, markup = _fresh(eom)
+    assert text == str(eom)
+    assert markup.startswith("<mrow><mo>[</mo>") and markup.count("<mo>=</mo>") == 1
+    assert f'<mover accent="true">{THETA1}<mo>&#168;</mo></mover>' in markup
+    assert f"<mi>sin</mi><mrow><mo>(</mo>{THETA1}<mo>)</mo></mrow>" in markup
+    _well_formed(markup)
+
+
+@pytest.mark.parametrize("value, text, markup", [
+    (True, "True", "<mi>True</mi>"),
+    ("a <b>", "a <b>", "<mtext>a &lt;b&gt;</mtext>"),
+    (3, "3", "<mn>3</mn>"),
+    ({"omega_1": sp.sqrt(g / l1)}, str({"omega_1": sp.sqrt(g / l1)}), None),
+])
+def test_plain_values(value, text, markup):
+    shown = _fresh(value)
+    assert shown[0] == text
+    if markup is not None:
+        assert shown[1] == markup
+    else:
+        _well_formed(shown[1])
+
+
+def test_a_huge_answer_is_cut_and_gets_no_mathml():
+    big = sum(sp.Symbol(f"x{i}") ** i for i in range(800))
+    text, markup = _fresh(big)
+    assert text.endswith(" ...") and len(text) == MATHML_MAX_CHARS + 4 and markup is None
+
+
+def test_an_unprintable_value_is_shown_as_nothing():
+    class Bad:
+        def __str__(self):
+            raise RuntimeError("no")
+    assert _fresh(Bad()) == (None, None)
+
+
+def test_the_same_text_is_rendered_once():
+    first = _fresh(th.diff(t) ** 2)
+    display._MATHML[("Pow", first[0])] = "cached"
+    assert show(th.diff(t) ** 2) == (first[0], "cached")
