@@ -6,9 +6,11 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import lagrade
-from lagrade.answers.latex import MAX_LATEX_CHARS, is_latex, parse_latex_answer
+from lagrade.answers.latex import MAX_LATEX_CHARS, _antlr_converter, is_latex, parse_latex_answer
 from lagrade.answers.text import TextAnswerError, load_toml_answer, parse_math
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -274,3 +276,41 @@ def test_fast_sll_parse_reads_every_golden_latex_answer_as_the_full_parser_does(
     full = load_answer(path, problem)
     assert {k: str(v) for k, v in fast.values.items()} == {k: str(v) for k, v in full.values.items()}
     assert [str(p) for p in fast.problems] == [str(p) for p in full.problems]
+
+
+# --------------------------------------------------------------------------- reading numbers fast
+
+def _sympys_number(text):
+    try:
+        return sp.Number(text)
+    except Exception as exc:  # noqa: BLE001
+        return type(exc)
+
+
+@settings(max_examples=300, deadline=None, derandomize=True)
+@given(text=st.one_of(st.integers(0, 10**30).map(str), st.text(alphabet="0123456789.,-e²٣ ", min_size=1, max_size=8)))
+def test_the_converter_reads_a_number_as_sympy_does(text):
+    module = _antlr_converter().sympy
+    try:
+        ours = module.Number(text)
+    except Exception as exc:  # noqa: BLE001
+        ours = type(exc)
+    theirs = _sympys_number(text)
+    assert ours == theirs and type(ours) is type(theirs)
+
+
+@pytest.mark.parametrize("text", [
+    r"\frac{1}{2} m_1 l^2 \dot{\theta}_1^2 + m_2 g l \cos\theta_1",
+    r"\frac{3}{4} m l^{2} \dot\phi^{2} - 10 x^{12} + 0.25 k x",
+    r"\sqrt{\frac{2 g}{3 l}} + 2^{10} \cdot 1000 - \frac{0}{7}",
+    r"\ddot{\theta} = -\frac{g}{l}\sin\theta",
+])
+def test_latex_reads_the_same_with_whole_numbers_read_directly(text):
+    converter = _antlr_converter()
+    fast = read(text)
+    patched, converter.sympy = converter.sympy, sp  # sympy's own converter, reading numbers with parse_expr
+    try:
+        slow = read(text)
+    finally:
+        converter.sympy = patched
+    assert fast == slow and sp.srepr(fast) == sp.srepr(slow)
