@@ -192,12 +192,16 @@ grader.close()  # its folder in /tmp
 
 def own_code_seconds(problem: str, copies: dict[str, list], repeats: int = 3) -> float:
     """What the answers' own code costs: the CPU time of each distinct Python file run plainly (no
-    sandbox, no grading) in a child forked from a warmed grader, as the sandbox forks it; the median
+    sandbox, no grading) in a child forked from a warmed grader, as the sandbox forks it (in a grader's
+    environment: sympy's cache is as large, so the answers' code is as fast); the median
     of ``repeats``, times the number of copies (``copies``: content hash -> [file, count]). No grader
     can take less: it is the part of a class's time that grading cannot remove."""
+    from lagrade.bulk.worker import grader_environment
+
     counts = {key: fk for key, fk in copies.items() if fk[0].suffix == ".py"}
     distinct = [str(f) for f, _ in counts.values()] * repeats
-    out = subprocess.run([sys.executable, "-c", OWN, problem, *distinct], capture_output=True, text=True, check=True)
+    out = subprocess.run([sys.executable, "-c", OWN, problem, *distinct], capture_output=True, text=True, check=True,
+                         env=grader_environment(tempfile.gettempdir()))
     seconds = [float(x) for x in out.stdout.split()]
     per_file = [statistics.median(seconds[i::len(counts)]) for i in range(len(counts))]
     return sum(s * k for s, (_, k) in zip(per_file, counts.values()))
