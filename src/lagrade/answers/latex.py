@@ -855,8 +855,8 @@ def _antlr_converter() -> Any:
     """sympy's converter from ANTLR's parse tree, reading whole numbers itself.
 
     The converter makes every number with ``sympy.Number(text)``, which reads the text as Python with
-    ``parse_expr``, which imports all of sympy into a fresh namespace first: 0.5 ms per number, about
-    half of the time a LaTeX answer takes to read. A whole number in decimal digits is read here, to
+    ``parse_expr``, which imports all of sympy into a fresh namespace first: about 0.3 ms a number, a
+    third of the time a LaTeX answer took to read. A whole number in decimal digits is read here, to
     the same Integer; any other text still goes to ``sympy.Number``."""
     from sympy.parsing.latex import _parse_latex_antlr as converter
 
