@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import os
 import stat
+import subprocess
+import sys
 import time
 from pathlib import Path
 
-from lagrade.bulk.worker import SYMPY_CACHE_ENTRIES, GraderProcess, grader_environment, stop_all
+from lagrade.bulk.worker import (_ORPHAN, SYMPY_CACHE_ENTRIES, GraderProcess, _pid_namespace, grader_environment,
+                                 remove_orphaned_folders, stop_all)
 from lagrade.library import problem_path, reference_dir
 
 
@@ -109,3 +112,48 @@ def test_a_grader_gets_a_larger_sympy_cache_unless_one_is_set(monkeypatch):
     assert int(env["SYMPY_CACHE_SIZE"]) == SYMPY_CACHE_ENTRIES > 1000
     monkeypatch.setenv("SYMPY_CACHE_SIZE", "500")  # an instructor's own choice wins
     assert grader_environment("/somewhere")["SYMPY_CACHE_SIZE"] == "500"
+
+
+def test_only_this_users_folders_of_coordinators_that_no_longer_run_are_removed(tmp_path):
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True,
+                          text=True, check=True)
+    dead_pid = int(dead.stdout)
+    ns = _pid_namespace()
+
+    def folder(name: str) -> Path:
+        path = tmp_path / name
+        path.mkdir()
+        (path / "lagrade-job-x").mkdir()
+        (path / "lagrade-job-x" / "12.14.py").write_text("L = 0\n")
+        return path
+
+    orphan = folder(f"lagrade-grader-{ns}-{dead_pid}-abc_1")
+    running = folder(f"lagrade-grader-{ns}-{os.getpid()}-abc_2")          # this process runs
+    elsewhere = folder(f"lagrade-grader-{ns + 1}-{dead_pid}-abc_3")     # another pid namespace
+    old_style = folder("lagrade-grader-abc_4")                            # no pid in the name
+    target = folder("kept")
+    link = tmp_path / f"lagrade-grader-{ns}-{dead_pid}-abc_5"
+    link.symlink_to(target)
+    a_file = tmp_path / f"lagrade-grader-{ns}-{dead_pid}-abc_6"
+    a_file.write_text("")
+    others = None
+    if os.getuid() == 0:  # another user's folder: only root can make one here
+        others = folder(f"lagrade-grader-{ns}-{dead_pid}-abc_7")
+        for p in (others, *others.rglob("*")):
+            os.chown(p, 65534, 65534)
+
+    assert remove_orphaned_folders(str(tmp_path)) == [str(orphan)]
+    assert not orphan.exists()
+    for kept in (running, elsewhere, old_style, target / "lagrade-job-x" / "12.14.py", link, a_file):
+        assert kept.exists() or kept.is_symlink()
+    if others is not None:
+        assert others.exists()
+
+
+def test_a_grader_folder_names_its_coordinator():
+    g = GraderProcess({"12.14": problem_path("12.14").read_text(encoding="utf-8")})
+    try:
+        m = _ORPHAN.fullmatch(Path(g.dir).name)
+        assert m and int(m.group(1)) == _pid_namespace() and int(m.group(2)) == os.getpid()
+    finally:
+        g.kill()

@@ -7,6 +7,7 @@ import signal
 import sqlite3
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -15,6 +16,7 @@ from conftest import assert_expected
 import classgen
 from lagrade.bulk.assignment import load_assignment
 from lagrade.bulk.runner import grade_folder
+from lagrade.bulk.worker import _ORPHAN
 
 GRADE = "import sys; from lagrade.cli_bulk import grade; grade(sys.argv[1:])"
 
@@ -38,6 +40,12 @@ def _start(root: Path, hw: Path, db: Path) -> subprocess.Popen:
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
 
 
+def _grader_folders(pid: int) -> list[Path]:
+    """The grader folders that the coordinator with this pid made."""
+    return [p for p in Path(tempfile.gettempdir()).glob("lagrade-grader-*")
+            if (m := _ORPHAN.fullmatch(p.name)) and int(m.group(2)) == pid]
+
+
 def test_kill_9_and_resume_grades_every_submission_exactly_once(tmp_path):
     root = tmp_path / "submissions"
     expected = classgen.make_class(root, 14, problems=["12.43", "12.3", "12.22"], hostile=False, broken=True,
@@ -47,7 +55,7 @@ def test_kill_9_and_resume_grades_every_submission_exactly_once(tmp_path):
     hw.write_text(classgen.assignment_toml(["12.43", "12.3", "12.22"]))
     db = tmp_path / "hw.sqlite"
 
-    kills = []
+    kills, killed = [], []
     for stop_at in (5, 17):  # kill twice, at different points
         proc = _start(root, hw, db)
         deadline = time.monotonic() + 240
@@ -57,10 +65,14 @@ def test_kill_9_and_resume_grades_every_submission_exactly_once(tmp_path):
         os.kill(proc.pid, signal.SIGKILL)
         proc.wait()
         kills.append(_count(db, "grade_log"))
+        killed.append(proc.pid)
+        # its graders died with it, and nothing could remove their folders (one holds a submission)
+        assert _grader_folders(proc.pid)
     assert 0 < kills[0] <= kills[1] < n
 
     proc = _start(root, hw, db)
     assert proc.wait(timeout=600) == 0, proc.stderr.read().decode()
+    assert not [f for pid in killed for f in _grader_folders(pid)], "a later run leaves a killed run's folders"
 
     con = sqlite3.connect(db)
     log = con.execute("SELECT student, problem, count(*) FROM grade_log GROUP BY student, problem").fetchall()

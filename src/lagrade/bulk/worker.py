@@ -12,8 +12,10 @@ The coordinator kills a grader process that overruns a hard deadline and starts 
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import signal
+import stat
 import subprocess
 import sys
 import tempfile
@@ -258,6 +260,68 @@ def grader_environment(directory: str) -> dict[str, str]:
     return env
 
 
+def _folder_prefix() -> str:
+    """``lagrade-grader-NS-PID-``: the coordinator's pid namespace and pid, so that a later run can
+    tell whether the process that made a folder still runs."""
+    return f"lagrade-grader-{_pid_namespace()}-{os.getpid()}-"
+
+
+def _pid_namespace() -> int:
+    try:
+        return os.stat("/proc/self/ns/pid").st_ino
+    except OSError:
+        return 0
+
+
+_ORPHAN = re.compile(r"lagrade-grader-(\d+)-(\d+)-[A-Za-z0-9_]+")
+_swept = False
+
+
+def remove_orphaned_folders(root: str | None = None) -> list[str]:
+    """Remove the grader folders that a killed coordinator left behind; once per process, first thing.
+
+    When ``lagrade grade`` itself is killed (kill -9, the out-of-memory killer), its graders die with
+    it and no process is left to remove their folders, which hold a submission and its sandbox's
+    working folder. A folder goes if this user owns it (a real folder, not a link), and the process
+    named in it, in this pid namespace, no longer runs. A pid in use keeps its folder, even if it was
+    reused by another program; a folder from another pid namespace (a container sharing /tmp) is
+    never touched. Returns the folders removed."""
+    global _swept
+    if root is None:
+        if _swept:
+            return []
+        _swept = True
+    root = root or tempfile.gettempdir()
+    namespace, removed = _pid_namespace(), []
+    try:
+        names = os.listdir(root)
+    except OSError:
+        return removed
+    for name in names:
+        m = _ORPHAN.fullmatch(name)
+        if not m or int(m.group(1)) != namespace or _running(int(m.group(2))):
+            continue
+        path = os.path.join(root, name)
+        try:
+            st = os.lstat(path)
+        except OSError:
+            continue
+        if stat.S_ISDIR(st.st_mode) and st.st_uid == os.getuid():
+            shutil.rmtree(path, ignore_errors=True)
+            removed.append(path)
+    return removed
+
+
+def _running(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:  # another user's process: it runs
+        return True
+    return True
+
+
 class GraderProcess:
     """A grader process seen from the coordinator: start, warm, send a job, wait, kill."""
 
@@ -267,7 +331,8 @@ class GraderProcess:
         # the process is killed or dies. Traversable by others, as /tmp is, because a child that has
         # become `nobody` still reaches its own working folder by its full path; everything in it is
         # a folder of its own that only its owner can read (0700).
-        self.dir = tempfile.mkdtemp(prefix="lagrade-grader-")
+        remove_orphaned_folders()
+        self.dir = tempfile.mkdtemp(prefix=_folder_prefix())
         os.chmod(self.dir, 0o711)
         down_r, down_w = os.pipe()   # coordinator -> grader
         up_r, up_w = os.pipe()       # grader -> coordinator
