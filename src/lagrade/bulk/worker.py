@@ -44,7 +44,7 @@ class Grader:
         from lagrade.grade import references
         from lagrade.library import load_problem
 
-        self.dir = Path(directory) if directory else Path(tempfile.mkdtemp(prefix="lagrade-grader-"))
+        self.dir = Path(directory) if directory else Path(tempfile.mkdtemp(prefix=_folder_prefix()))
         (self.dir / "problems").mkdir(mode=0o700, exist_ok=True)  # the folder itself is traversable
         self.problems = {}
         for pid, text in problems.items():
@@ -261,8 +261,8 @@ def grader_environment(directory: str) -> dict[str, str]:
 
 
 def _folder_prefix() -> str:
-    """``lagrade-grader-NS-PID-``: the coordinator's pid namespace and pid, so that a later run can
-    tell whether the process that made a folder still runs."""
+    """``lagrade-grader-NS-PID-``: the pid namespace and pid of the process making a grader folder
+    (the coordinator, or a grader made in-process), so that a later run can tell whether it still runs."""
     return f"lagrade-grader-{_pid_namespace()}-{os.getpid()}-"
 
 
@@ -277,8 +277,16 @@ _ORPHAN = re.compile(r"lagrade-grader-(\d+)-(\d+)-[A-Za-z0-9_]+")
 _swept = False
 
 
-def remove_orphaned_folders(root: str | None = None) -> list[str]:
-    """Remove the grader folders that a killed coordinator left behind; once per process, first thing.
+def _remove_orphans_once() -> None:
+    """`remove_orphaned_folders` in the temporary directory, the first time a grader is started."""
+    global _swept
+    if not _swept:
+        _swept = True
+        remove_orphaned_folders(tempfile.gettempdir())
+
+
+def remove_orphaned_folders(root: str) -> list[str]:
+    """Remove the grader folders in ``root`` that a killed coordinator left behind.
 
     When ``lagrade grade`` itself is killed (kill -9, the out-of-memory killer), its graders die with
     it and no process is left to remove their folders, which hold a submission and its sandbox's
@@ -286,12 +294,6 @@ def remove_orphaned_folders(root: str | None = None) -> list[str]:
     named in it, in this pid namespace, no longer runs. A pid in use keeps its folder, even if it was
     reused by another program; a folder from another pid namespace (a container sharing /tmp) is
     never touched. Returns the folders removed."""
-    global _swept
-    if root is None:
-        if _swept:
-            return []
-        _swept = True
-    root = root or tempfile.gettempdir()
     namespace, removed = _pid_namespace(), []
     try:
         names = os.listdir(root)
@@ -331,7 +333,7 @@ class GraderProcess:
         # the process is killed or dies. Traversable by others, as /tmp is, because a child that has
         # become `nobody` still reaches its own working folder by its full path; everything in it is
         # a folder of its own that only its owner can read (0700).
-        remove_orphaned_folders()
+        _remove_orphans_once()
         self.dir = tempfile.mkdtemp(prefix=_folder_prefix())
         os.chmod(self.dir, 0o711)
         down_r, down_w = os.pipe()   # coordinator -> grader
