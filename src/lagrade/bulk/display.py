@@ -11,6 +11,7 @@ markup as strings, and the two printers share one ordering of each sum. The text
 
 from __future__ import annotations
 
+from html import escape
 from typing import Any
 
 import sympy as sp
@@ -97,18 +98,14 @@ def _mathml(value: Any, printer: _PhysicsMathML) -> str:
     if isinstance(value, (list, tuple)):
         return "<mrow><mo>[</mo>" + "<mo>,</mo>".join(_mathml(x, printer) for x in value) + "<mo>]</mo></mrow>"
     if isinstance(value, dict):
-        items = [f"<mrow>{_mathml(k, printer) if not isinstance(k, str) else '<mi>' + _esc(k) + '</mi>'}"
+        items = [f"<mrow>{_mathml(k, printer) if not isinstance(k, str) else '<mi>' + escape(k, quote=False) + '</mi>'}"
                  f"<mo>:</mo>{_mathml(x, printer)}</mrow>" for k, x in value.items()]
         return "<mrow><mo>{</mo>" + "<mo>,</mo>".join(items) + "<mo>}</mo></mrow>"
     if isinstance(value, bool):
         return f"<mi>{value}</mi>"
     if isinstance(value, str):
-        return f"<mtext>{_esc(value)}</mtext>"
+        return f"<mtext>{escape(value, quote=False)}</mtext>"
     return printer.doprint(sp.sympify(value) if isinstance(value, (int, float)) else value)
-
-
-def _esc(s: str) -> str:
-    return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
 class _PhysicsMathML(MathMLPresentationPrinter):
