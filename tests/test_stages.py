@@ -66,7 +66,7 @@ def test_every_reference_scene_has_machine_code_stages_equal_to_the_python_loop(
         for s in range(1, N_STAGES_EXTENDED):
             state = (coef[s, :s + 1] @ want[:s + 1]).reshape(dim, K)
             want[s + 1] = (rates(T[s], state) * h).reshape(-1)
-        run, last_state, last_rates, amax = rates.stages(Z, T, h, coef)
+        run, last_state, last_rates, amax, _ = rates.stages(Z, T, h, coef)
         run(1, N_STAGES_EXTENDED)
         scale = np.abs(want).max(axis=1, keepdims=True) + 1e-300
         assert np.all(np.abs(Z - want) <= 1e-12 * scale), f"{pid} {key}"
@@ -85,6 +85,121 @@ def test_a_run_takes_the_same_steps_and_gives_the_same_motion(pid):
         assert fast.ok and slow.ok
         assert fast.rhs_evals == slow.rhs_evals
         assert np.allclose(fast.y, slow.y, rtol=1e-7, atol=1e-9), f"{pid} {key}"
+
+
+@pytest.fixture
+def python_loop(monkeypatch):
+    """Machine-code stages, but the integrator's own loop in Python around them (no `bind_columns`)."""
+    stages = CompiledRates.stages
+
+    def without_loop(self, *buffers):
+        made = stages(self, *buffers)
+        return None if made is None else (*made[:4], lambda named: None)
+
+    def use():
+        monkeypatch.setattr(CompiledRates, "stages", without_loop)
+
+    def undo():
+        monkeypatch.setattr(CompiledRates, "stages", stages)
+    return use, undo
+
+
+@pytest.mark.parametrize("pid", problem_ids())
+def test_the_loop_in_machine_code_takes_the_python_loops_steps_in_every_scene(pid, python_loop):
+    """Same stages kernel, the loop around it in machine code or in Python: the same motion, and
+    the same steps to rounding. Only to rounding: the error estimate is a sum of 13 stages that
+    numpy's product may add in another order (or with fused multiply-adds), and where the motion is
+    so smooth that the estimate is rounding noise (12.29's free fall), the step sizes follow that
+    noise. So: the same outcome, samples within the integration tolerance, and a step count that
+    differs by at most one step with its dense output per 4."""
+    use, undo = python_loop
+    same_steps = []
+    for key, mech, rates, y0 in _reference_rates(pid):
+        acc = ACCURACY["default"]
+        for horizon, t_eval in [(mech.system.horizon, None), (0.7, np.array([0.0, 0.1, 0.1, 0.35, 0.7]))]:
+            undo()
+            fast = integrate(rates, y0, horizon, acc, method="DOP853", t_eval=t_eval)
+            use()
+            slow = integrate(rates, y0, horizon, acc, method="DOP853", t_eval=t_eval)
+            assert fast.ok == slow.ok and fast.message == slow.message, f"{pid} {key}"
+            assert abs(fast.rhs_evals - slow.rhs_evals) <= 15 * max(1, slow.rhs_evals // 60), f"{pid} {key}"
+            assert np.allclose(fast.y, slow.y, rtol=1e-7, atol=1e-9), f"{pid} {key}"
+            same_steps.append(fast.rhs_evals == slow.rhs_evals)
+    assert same_steps.count(False) <= len(same_steps) // 2, f"{pid}: the steps differ more often than rounding explains"
+
+
+def test_the_machine_code_loop_stops_where_the_python_loop_stops(python_loop):
+    """Its three ways out besides the end: a step too small (NaN rates from t = 0.5 on in one column),
+    the integrator's own evaluation budget, and the singularity guard (its column and stage times)."""
+    use, undo = python_loop
+    acc = ACCURACY["default"]
+    f = compile_exprs([-x + sp.sqrt(0.5 - t) * k], [x, v, t, k])
+    nan_later = CompiledRates(f, 2, np.array([[0.0, 1.0, 2.0]]), copied=1)   # sqrt(< 0) from t = 0.5 on
+    y0 = np.array([[1.0, 0.5, 0.2], [0.0, 0.0, 1.0]])
+    outs = []
+    for switch in (undo, use):
+        switch()
+        outs.append(integrate(nan_later, y0, 1.0, acc, method="DOP853"))
+    assert [o.ok for o in outs] == [False, False]
+    assert all("step size too small in trajectory 0 at t = 0.49999" in o.message for o in outs), outs[0].message
+
+    rates = CompiledRates(compile_exprs([-k * x], [x, v, t, k]), 2, np.array([[1.0, 4.0, 9.0, 16.0]]), copied=1)
+    y0 = np.array([[1.0, 0.0, 0.5, 1.0], [0.0, 1.0, 0.5, 0.0]])
+    fun = lambda tt, Y: rates(tt, Y)  # noqa: E731
+    outs = []
+    for switch in (undo, use):
+        switch()
+        hook = lambda *b: _with_count(rates.stages(*b))  # noqa: E731
+        outs.append(dop853_columns(fun, 0.0, y0, 50.0, rtol=1e-10, atol=1e-10, t_eval=np.linspace(0, 50, 11),
+                                   max_evals=300, stages=hook))
+    assert outs[0].status == outs[1].status == -1 and outs[0].failed_column == outs[1].failed_column
+    assert outs[0].t_failed == pytest.approx(outs[1].t_failed, rel=1e-6)
+    assert all("more than 300 evaluations" in o.message for o in outs) and outs[0].nfev == outs[1].nfev
+    assert np.array_equal(np.isnan(outs[0].y), np.isnan(outs[1].y))
+
+
+def _with_count(made):
+    """What `trajectory.integrate` hands the integrator, without its count and guard."""
+    run, state, rates, amax, bind = made
+    ints = np.zeros(len(native.COLUMN_INTS), dtype=np.int64)
+    reals = np.zeros(len(native.COLUMN_REALS))
+
+    def columns(buffers):
+        loop = bind(buffers)
+        if loop is None:
+            return None
+
+        def run_loop(nfev, nfev_limit, t_end, rtol, a_r):
+            at = native.COLUMN_INTS.index
+            ints[at("max_count")], ints[at("nfev_limit")], ints[at("guard")] = 2**62, nfev_limit, 0
+            ints[at("count")], ints[at("nfev")] = 0, nfev
+            reals[:] = (t_end, rtol, a_r, np.inf)
+            status = loop(ints, reals)
+            return status, int(ints[at("column")]), int(ints[at("nfev")])
+        return run_loop
+    return (lambda s0, s1: run(s0, s1)), state, rates, columns
+
+
+def test_the_loop_refuses_buffers_it_would_read_past():
+    rates, y0, _ = _ball()
+    dim, K = y0.shape
+    made = rates.stages(np.zeros((17, dim * K)), np.zeros((16, K)), np.full(K, 1e-3), _coef())
+    n, n_eval = dim * K, 5
+    good = {"F0": np.zeros((dim, K)), "t": np.zeros(K), "h_abs": np.zeros(K), "absa_old": np.zeros(n),
+            "absa_new": np.zeros(n), "P": np.zeros((7, n)), "t_eval": np.linspace(0, 1, n_eval),
+            "samples": np.zeros((dim, K, n_eval)), "E": np.zeros(26), "W": np.zeros(112), "limit": np.zeros(K),
+            "ynew": np.zeros(n), "t_new": np.zeros(K), "t_next": np.zeros(K), "C": np.zeros(16),
+            "rejected": np.zeros(K, dtype=bool), "active": np.ones(K, dtype=bool),
+            "accepted": np.zeros(K, dtype=bool), "i_eval": np.zeros(K, dtype=np.int64)}
+    assert made[4](good) is not None
+    for name, bad in [("samples", np.zeros((dim, K, n_eval - 1))), ("P", np.zeros((6, n))),
+                      ("i_eval", np.zeros(K, dtype=np.int32)), ("active", np.ones(K)),
+                      ("F0", np.zeros((K, dim)).T), ("W", np.zeros(112)[::-1].copy()[:111])]:
+        with pytest.raises(ValueError, match=name):
+            made[4]({**good, name: bad})
+    loop = made[4](good)
+    with pytest.raises(ValueError):
+        loop(np.zeros(3, dtype=np.int64), np.zeros(4))
 
 
 def _ball():

@@ -775,3 +775,332 @@ class Stages:
         # the machine code has only the addresses: the buffers (and the code) live as long as `run`
         run.keep = (Z, T, h, coef, src, out, rates, amax, self._library)
         return run
+
+    def bind_columns(self, buffers: dict[str, np.ndarray]):
+        """``loop(ints, reals) -> status``: `dop853_columns`' whole loop without events on these
+        buffers (every name of `COLUMN_BUFFERS`; the stage kernel's as given to `bind`), calling this
+        kernel; or None without native code. ``ints`` (int64) and ``reals`` (float64) hold the
+        scalars, in and out, named by ``COLUMN_INTS`` and ``COLUMN_REALS``; the loop sets K, n_eval and dim."""
+        address = _column_loop()
+        if address is None:
+            return None
+        if self._library is None:
+            self._build()
+        dim, K, n_eval = self.dim, buffers["h"].shape[0], buffers["t_eval"].shape[0]
+        n = dim * K
+        sizes = {"Z": STAGE_COLUMNS * n, "T": (STAGE_COLUMNS - 1) * K, "h": K,
+                 "coef": (STAGE_COLUMNS - 1) * STAGE_COLUMNS, "src": self.rates.nargs * K, "out": self.rates.count * K,
+                 "rates": n, "amax": K, "F0": n, "t": K, "h_abs": K, "absa_old": n, "absa_new": n, "P": 7 * n,
+                 "t_eval": n_eval, "samples": n * n_eval, "E": 2 * 13, "W": 7 * 16, "limit": K, "ynew": n,
+                 "t_new": K, "t_next": K, "C": 16, "rejected": K, "active": K, "accepted": K, "i_eval": K}
+        flags, indices = ("rejected", "active", "accepted"), ("i_eval",)
+        arrays = []
+        for name in COLUMN_BUFFERS:  # the machine code reads and writes them unchecked
+            a = buffers[name]
+            dtype = np.bool_ if name in flags else np.int64 if name in indices else np.float64
+            if a.dtype != dtype or a.size != sizes[name] or not a.flags.c_contiguous or not a.flags.writeable:
+                raise ValueError(f"{name}: a writeable C-contiguous {np.dtype(dtype).name} array of {sizes[name]} "
+                                 f"entries expected")
+            arrays.append(a)
+        table = (ctypes.c_void_p * (len(arrays) + 1))(*[a.ctypes.data for a in arrays], self._library.address)
+        fn = _COLUMNS_SIGNATURE(address)
+        shape = {"K": K, "n_eval": n_eval, "dim": dim}
+
+        def loop(ints: np.ndarray, reals: np.ndarray) -> int:
+            if ints.shape != (len(COLUMN_INTS),) or ints.dtype != np.int64 or not ints.flags.c_contiguous \
+                    or reals.shape != (len(COLUMN_REALS),) or reals.dtype != np.float64 or not reals.flags.c_contiguous:
+                raise ValueError("the loop's scalars: int64 and float64 arrays of the sizes of COLUMN_INTS and COLUMN_REALS")
+            for name, value in shape.items():
+                ints[COLUMN_INTS.index(name)] = value
+            return fn(ctypes.addressof(table), ints.ctypes.data, reals.ctypes.data)
+
+        loop.keep = (arrays, table, self._library)
+        return loop
+
+
+# ----------------------------------------------------------------------------- DOP853 column loop
+
+#: ``i64 lagrade_columns(i8 **buffers, i64 *ints, double *reals)``; see `ColumnLoop`.
+_COLUMNS_SIGNATURE = ctypes.PYFUNCTYPE(ctypes.c_int64, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p)
+#: The buffers of `ColumnLoop.bind`, in the order of the pointer table the machine code reads.
+COLUMN_BUFFERS = ("Z", "T", "h", "coef", "src", "out", "rates", "amax",  # the stage kernel's own
+                  "F0", "t", "h_abs", "absa_old", "absa_new", "P", "t_eval", "samples", "E", "W", "limit",
+                  "ynew", "t_new", "t_next", "C", "rejected", "active", "accepted", "i_eval")
+#: ints: in K, n_eval, dim, max_count, nfev_limit, guard; in and out count, nfev; out column, s0, s1
+COLUMN_INTS = ("K", "n_eval", "dim", "max_count", "nfev_limit", "guard", "count", "nfev", "column", "s0", "s1")
+#: reals: t_end, rtol, atol / rtol, the guard's smallest limit
+COLUMN_REALS = ("t_end", "rtol", "a_r", "lowest")
+
+
+def _columns_ir() -> str:
+    """The IR of `dop853_columns`' loop without events, every line of it (see there), calling the
+    stage kernel through a pointer (the last entry of the buffer table): one call per integration
+    instead of about a hundred numpy calls per step. The arithmetic is the numpy code's, element by
+    element (numpy's NaN rules for maximum and minimum included); sums run in index order, where
+    numpy's products may sum in another, so results agree to rounding, not bit for bit."""
+    from lagrade.compare.dop853 import (ERROR_EXPONENT, LOOP_DONE, LOOP_OVER_BUDGET, LOOP_SINGULAR,
+                                        LOOP_STEP_TOO_SMALL, LOOP_TOO_MANY, MAX_FACTOR, MIN_FACTOR, SAFETY)
+
+    ir, _, _ = _llvm()
+    double, i64, i8, i1 = ir.DoubleType(), ir.IntType(64), ir.IntType(8), ir.IntType(1)
+    dptr, lptr, bptr = double.as_pointer(), i64.as_pointer(), i8.as_pointer()
+    stage_fn = ir.FunctionType(ir.VoidType(), [dptr] * 8 + [i64] * 3).as_pointer()
+    module = ir.Module(name="lagrade_columns")
+    fn = ir.Function(module, ir.FunctionType(i64, [bptr.as_pointer(), lptr, dptr]), name="lagrade_columns")
+    table, ints, reals = fn.args
+    b = ir.IRBuilder(fn.append_basic_block("entry"))
+    c = lambda x: ir.Constant(i64, x)  # noqa: E731
+    f = lambda x: ir.Constant(double, x)  # noqa: E731
+    fabs = module.declare_intrinsic("llvm.fabs", [double])
+    sqrt = module.declare_intrinsic("llvm.sqrt", [double])
+    pow_ = module.declare_intrinsic("llvm.pow", [double])
+
+    def buf(name: str, ty=dptr):
+        return b.bitcast(b.load(b.gep(table, [c(COLUMN_BUFFERS.index(name))])), ty)
+
+    Z, T, h, coef, src, out, rates, amax = (buf(n) for n in COLUMN_BUFFERS[:8])
+    F0, t, h_abs, absa_old, absa_new, P, t_eval, samples, E, W, limit, ynew, t_new, t_next, C = (
+        buf(n) for n in COLUMN_BUFFERS[8:23])
+    rejected, active, accepted = (buf(n, bptr) for n in ("rejected", "active", "accepted"))
+    i_eval = buf("i_eval", lptr)
+    stages = b.bitcast(b.load(b.gep(table, [c(len(COLUMN_BUFFERS))])), stage_fn)
+    K, n_eval, dim, max_count, nfev_limit, guard = (b.load(b.gep(ints, [c(COLUMN_INTS.index(n))]))
+                                                   for n in COLUMN_INTS[:6])
+    t_end, rtol, a_r, lowest = (b.load(b.gep(reals, [c(i)])) for i in range(4))
+    n = b.mul(dim, K)
+    dim_f = b.sitofp(dim, double)
+
+    def var(ty, init):  # a mutable scalar (in the entry block: an alloca in a loop grows the stack)
+        slot = b.alloca(ty)
+        b.store(init, slot)
+        return slot
+
+    count = var(i64, b.load(b.gep(ints, [c(COLUMN_INTS.index("count"))])))
+    nfev = var(i64, b.load(b.gep(ints, [c(COLUMN_INTS.index("nfev"))])))
+    flag = var(i1, ir.Constant(i1, 0))
+    acc = var(double, f(0.0))
+    acc2 = var(double, f(0.0))
+    worst = var(double, f(0.0))
+    worst_k = var(i64, c(-1))
+    j_slot = var(i64, c(0))
+    powers = b.alloca(double, c(7))  # x, x^2, ..., x^7 of a sample in its step
+
+    def ld(ptr, i):
+        return b.load(b.gep(ptr, [i]))
+
+    def st(value, ptr, i):
+        b.store(value, b.gep(ptr, [i]))
+
+    def is_set(ptr, i):
+        return b.icmp_unsigned("!=", ld(ptr, i), ir.Constant(i8, 0))
+
+    def as_byte(bit):
+        return b.zext(bit, i8)
+
+    def np_max(x, y):  # numpy's maximum: NaN if either is
+        return b.select(b.fcmp_unordered("uno", x, y), b.fadd(x, y), b.select(b.fcmp_ordered(">=", x, y), x, y))
+
+    def np_min(x, y):
+        return b.select(b.fcmp_unordered("uno", x, y), b.fadd(x, y), b.select(b.fcmp_ordered("<=", x, y), x, y))
+
+    def ret(status: int, **outs):
+        for name, value in outs.items():
+            st(value, ints, c(COLUMN_INTS.index(name)))
+        st(b.load(count), ints, c(COLUMN_INTS.index("count")))
+        st(b.load(nfev), ints, c(COLUMN_INTS.index("nfev")))
+        b.ret(c(status))
+
+    def run_stages(s0: int, s1: int):
+        """The budget checks, the stages, and the singularity guard, as `trajectory.integrate` has them."""
+        with b.if_then(b.icmp_signed(">", b.add(b.load(nfev), c(s1 - s0)), nfev_limit)):
+            ret(LOOP_OVER_BUDGET)
+        b.store(b.add(b.load(count), c(s1 - s0)), count)
+        with b.if_then(b.icmp_signed(">", b.load(count), max_count)):
+            ret(LOOP_TOO_MANY)
+        b.call(stages, [Z, T, h, coef, src, out, rates, amax, K, c(s0), c(s1)])
+        b.store(b.add(b.load(nfev), c(s1 - s0)), nfev)
+        with b.if_then(b.icmp_signed("!=", guard, c(0))):
+            # the column with the largest amax / limit, the first of equals, as np.argmax
+            b.store(f(-math.inf), worst)
+            b.store(c(-1), worst_k)
+
+            def check(k):
+                a = ld(amax, k)
+                with b.if_then(b.fcmp_ordered(">", a, ld(limit, k))):
+                    ratio = b.fdiv(a, ld(limit, k))
+                    with b.if_then(b.fcmp_ordered(">", ratio, b.load(worst))):
+                        b.store(ratio, worst)
+                        b.store(k, worst_k)
+            with b.if_then(b.fcmp_ordered(">", _max_of(amax), lowest)):
+                _loop(ir, b, c(0), K, check)
+                with b.if_then(b.icmp_signed(">=", b.load(worst_k), c(0))):
+                    ret(LOOP_SINGULAR, column=b.load(worst_k), s0=c(s0), s1=c(s1))
+
+    def _max_of(ptr):
+        b.store(f(-math.inf), acc2)
+        _loop(ir, b, c(0), K, lambda k: b.store(np_max(b.load(acc2), ld(ptr, k)), acc2))
+        return b.load(acc2)
+
+    def stage_sum(table, row, width: int, i):
+        """sum_j table[row, j] Z[1 + j, i] over the j < width stages, in order (a loop, not unrolled:
+        the IR stays small, and so does the time to build and compile it, once per process)."""
+        b.store(f(0.0), acc)
+        base = b.mul(row, c(width))
+        _loop(ir, b, c(0), c(width), lambda j: b.store(b.fadd(b.load(acc), b.fmul(
+            ld(table, b.add(base, j)), ld(Z, b.add(b.mul(b.add(j, c(1)), n), i)))), acc))
+        return b.load(acc)
+
+    top = fn.append_basic_block("step")
+    b.branch(top)
+    b.position_at_end(top)
+
+    # ---- each column's step: at least 10 ulp of its time, unless shrinking after rejections
+    def step_size(k):
+        tk = b.call(fabs, [ld(t, k)])
+        ulp = b.fsub(b.bitcast(b.add(b.bitcast(tk, i64), c(1)), double), tk)  # np.spacing(|t|)
+        min_step = b.fmul(f(10.0), ulp)
+        hk = b.select(is_set(rejected, k), ld(h_abs, k), np_max(ld(h_abs, k), min_step))
+        st(hk, h_abs, k)
+        with b.if_then(b.and_(b.fcmp_ordered("<", hk, min_step), is_set(active, k))):
+            ret(LOOP_STEP_TOO_SMALL, column=k)
+        tn = b.select(is_set(active, k), np_min(b.fadd(ld(t, k), hk), t_end), ld(t, k))
+        st(tn, t_new, k)
+        st(b.fsub(tn, ld(t, k)), h, k)
+    _loop(ir, b, c(0), K, step_size)
+
+    def rows_by_column(body):
+        _loop(ir, b, c(0), dim, lambda d: _loop(ir, b, c(0), K, lambda k: body(b.add(b.mul(d, K), k), k)))
+
+    rows_by_column(lambda i, k: st(b.fmul(ld(F0, i), ld(h, k)), Z, b.add(n, i)))  # Z[1] = h K_0
+    _loop(ir, b, c(0), c(16), lambda s: _loop(ir, b, c(0), K, lambda k: st(
+        b.fadd(b.fmul(ld(C, s), ld(h, k)), ld(t, k)), T, b.add(b.mul(s, K), k))))
+    _loop(ir, b, c(0), K, lambda k: st(ld(t_new, k), T, b.add(b.mul(c(12), K), k)))
+    run_stages(1, 13)
+
+    # ---- DOP853's error norm per column and its step-size control (scipy's constants)
+    def control(k):
+        s5, s3 = var_pair
+        b.store(f(0.0), s5)
+        b.store(f(0.0), s3)
+
+        def component(d):
+            i = b.add(b.mul(d, K), k)
+            yn = ld(src, i)                        # the last stage's state is y_new
+            st(yn, ynew, i)
+            an = b.fadd(b.call(fabs, [yn]), a_r)
+            st(an, absa_new, i)
+            scale = np_max(ld(absa_old, i), an)
+            e5 = b.fdiv(stage_sum(E, c(0), 13, i), scale)
+            e3 = b.fdiv(stage_sum(E, c(1), 13, i), scale)
+            b.store(b.fadd(b.load(s5), b.fmul(e5, e5)), s5)
+            b.store(b.fadd(b.load(s3), b.fmul(e3, e3)), s3)
+        _loop(ir, b, c(0), dim, component)
+        den = b.fadd(b.load(s5), b.fmul(f(0.01), b.load(s3)))
+        den = b.select(b.fcmp_ordered("==", den, f(0.0)), f(1.0), den)
+        num = b.fdiv(b.fmul(b.load(s5), b.load(s5)), den)
+        norm = b.fdiv(b.call(sqrt, [b.fdiv(num, dim_f)]), rtol)
+        ok = b.and_(b.fcmp_ordered("<", norm, f(1.0)), is_set(active, k))
+        st(as_byte(ok), accepted, k)
+        factor = b.fmul(f(SAFETY), b.call(pow_, [norm, f(ERROR_EXPONENT)]))
+        grow = np_min(factor, f(MAX_FACTOR))
+        grow = b.select(is_set(rejected, k), np_min(grow, f(1.0)), grow)
+        shrink = b.select(b.fcmp_unordered("uno", factor, factor), f(MIN_FACTOR),
+                          b.select(b.fcmp_ordered(">=", factor, f(MIN_FACTOR)), factor, f(MIN_FACTOR)))  # fmax
+        st(b.fmul(ld(h, k), b.select(ok, grow, shrink)), h_abs, k)
+        st(as_byte(b.and_(is_set(active, k), b.not_(ok))), rejected, k)
+        with b.if_then(ok):
+            b.store(ir.Constant(i1, 1), flag)
+
+    var_pair = (var(double, f(0.0)), var(double, f(0.0)))
+    b.store(ir.Constant(i1, 0), flag)
+    _loop(ir, b, c(0), K, control)
+    with b.if_then(b.not_(b.load(flag))):
+        b.branch(top)  # no column accepted its step: try again with the smaller ones
+
+    # ---- accepted steps: FSAL, the error scale, the new times; the others keep their state
+    def keep(i, k):
+        with b.if_else(is_set(accepted, k)) as (yes, no):
+            with yes:
+                st(ld(rates, i), F0, i)
+                st(ld(absa_new, i), absa_old, i)
+            with no:
+                st(ld(Z, i), ynew, i)
+    rows_by_column(keep)
+    _loop(ir, b, c(0), K, lambda k: st(b.select(is_set(accepted, k), ld(t_new, k), ld(t, k)), t_next, k))
+
+    # ---- output samples in (t_k, t_next_k] of the accepted columns; the dense output only if some
+    # sample lies inside a step
+    b.store(ir.Constant(i1, 0), flag)
+
+    def inner(k):
+        j = ld(i_eval, k)
+        with b.if_then(b.and_(is_set(accepted, k), b.icmp_signed("<", j, n_eval))):
+            te = ld(t_eval, j)
+            with b.if_then(b.and_(b.fcmp_ordered("<=", te, ld(t_next, k)), b.fcmp_ordered("<", te, ld(t_new, k)))):
+                b.store(ir.Constant(i1, 1), flag)
+    _loop(ir, b, c(0), K, inner)
+    with b.if_then(b.load(flag)):
+        run_stages(13, 16)
+
+        _loop(ir, b, c(0), c(7), lambda p: _loop(ir, b, c(0), n, lambda i: st(
+            stage_sum(W, p, 16, i), P, b.add(b.mul(p, n), i))))
+
+    def write(k):
+        tk, hk, tn = ld(t, k), ld(h, k), ld(t_new, k)
+        b.store(ld(i_eval, k), j_slot)
+        head, body, after = (fn.append_basic_block(x) for x in ("samples", "sample", "samples_done"))
+        b.branch(head)
+        b.position_at_end(head)
+        j = b.load(j_slot)
+        more = b.and_(is_set(accepted, k), b.icmp_signed("<", j, n_eval))
+        timed = fn.append_basic_block("sample_time")
+        b.cbranch(more, timed, after)
+        b.position_at_end(timed)
+        te = ld(t_eval, j)
+        b.cbranch(b.fcmp_ordered("<=", te, ld(t_next, k)), body, after)
+        b.position_at_end(body)
+        x = b.fdiv(b.fsub(te, tk), hk)
+        _loop(ir, b, c(0), c(7), lambda p: st(b.call(pow_, [x, b.sitofp(b.add(p, c(1)), double)]), powers, p))
+        at_end = b.fcmp_unordered("uge", te, tn)  # not te < t_new: y_new itself
+
+        def component(d):
+            i = b.add(b.mul(d, K), k)
+            b.store(f(0.0), acc)
+            _loop(ir, b, c(0), c(7), lambda p: b.store(b.fadd(b.load(acc), b.fmul(
+                ld(powers, p), ld(P, b.add(b.mul(p, n), i)))), acc))
+            value = b.select(at_end, ld(ynew, i), b.fadd(b.load(acc), ld(Z, i)))
+            st(value, samples, b.add(b.mul(i, n_eval), j))
+        _loop(ir, b, c(0), dim, component)
+        b.store(b.add(j, c(1)), j_slot)
+        b.branch(head)
+        b.position_at_end(after)
+        st(b.load(j_slot), i_eval, k)
+    _loop(ir, b, c(0), K, write)
+
+    # ---- advance every column to its new state
+    _loop(ir, b, c(0), n, lambda i: st(ld(ynew, i), Z, i))
+    b.store(ir.Constant(i1, 0), flag)
+
+    def advance(k):
+        st(ld(t_next, k), t, k)
+        still = b.and_(is_set(active, k), b.fcmp_ordered("<", ld(t, k), t_end))
+        st(as_byte(still), active, k)
+        with b.if_then(still):
+            b.store(ir.Constant(i1, 1), flag)
+    _loop(ir, b, c(0), K, advance)
+    with b.if_then(b.load(flag)):
+        b.branch(top)
+    ret(LOOP_DONE)
+    return str(module)
+
+
+@functools.cache
+def _column_loop() -> int | None:
+    """The address of the column loop, compiled once per process (it does not depend on the rates)."""
+    if _llvm() is None:
+        return None
+    text = _columns_ir()
+    _llvm()[1].parse_assembly(text).verify()
+    library = _Library(text, "lagrade_columns")  # at -O0 like the rest: -O2 took twice as long to
+    _column_loop.library = library                # compile, for no gain measurable on this machine
+    return library.address

@@ -285,6 +285,8 @@ def _dense_matrix() -> np.ndarray:
 
 
 _W = _dense_matrix()
+#: the tables as the machine-code loop reads them (`StagesHook`)
+_E_FLAT, _W_FLAT, _C_FLAT = (np.ascontiguousarray(x, dtype=float).reshape(-1) for x in (_E, _W, C))
 #: np.dot without the __array_function__ dispatch (a third of its cost on small arrays); only ndarrays
 #: reach it here.
 _dot = getattr(np.dot, "__wrapped__", np.dot)
@@ -814,6 +816,14 @@ def dop853(fun: Callable[[float, np.ndarray], np.ndarray], t0: float, y0: np.nda
 #: stages s0 <= s < s1, reading Z, T and h as they are at the call; then ``state`` (dim, K) holds the
 #: last stage's state and ``rates`` (dim, K) its K_s (`lagrade.compare.rates.CompiledRates.stages`).
 StagesHook = Callable[[np.ndarray, np.ndarray, np.ndarray, np.ndarray], "tuple | None"]
+#: A fourth item of what the hook returns, ``bind(buffers) -> loop | None``, runs the whole loop of
+#: `dop853_columns` without events in machine code (`lagrade.native.Stages.bind_columns`):
+#: ``loop(nfev, nfev_limit, t_end, rtol, atol / rtol) -> (status, column, nfev)`` on the integrator's
+#: buffers, named as in `lagrade.native.COLUMN_BUFFERS`; it returns one of these statuses (the
+#: column: the one whose step became too small) or raises what the hook's own checks raise.
+LOOP_DONE, LOOP_STEP_TOO_SMALL, LOOP_TOO_MANY, LOOP_SINGULAR, LOOP_OVER_BUDGET = range(5)
+#: nfev_limit when there is none
+LOOP_NO_LIMIT = 2**62
 
 
 class _Budget(Exception):
@@ -931,8 +941,10 @@ def dop853_columns(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: floa
     for s, row in enumerate(rows):
         coef[s, :s + 1] = row
     fast = stages(Z, T, h, coef) if stages is not None else None
+    bind_loop = None
     if fast is not None:
-        run_stages, last_state, last_rates = fast
+        run_stages, last_state, last_rates, *more = fast
+        bind_loop = more[0] if more else None
     #: column -> the events that fired where it restarted, until its first step from there is
     #: accepted: a root of theirs at the restart time is the one just handled, not a new one (the
     #: root is only known to rounding, so the event may still sit on its old side there)
@@ -979,6 +991,21 @@ def dop853_columns(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: floa
         nfev += 1
         h_abs = _initial_steps(fun, t0, y_old, F0.reshape(-1).copy(), t_end, rtol, atol, dim, K)
         nfev += 1
+
+        if bind_loop is not None and not n_events:
+            # the whole loop below, events aside, in one call of machine code (`StagesHook`)
+            loop = bind_loop({
+                "F0": F0, "t": t, "h_abs": np.array(h_abs, dtype=float).reshape(K), "absa_old": absa_old,
+                "absa_new": absa_new, "P": P, "t_eval": t_eval, "samples": out, "E": _E_FLAT, "W": _W_FLAT,
+                "limit": np.empty(K), "ynew": ynew, "t_new": np.empty(K), "t_next": np.empty(K), "C": _C_FLAT,
+                "rejected": rejected, "active": active, "accepted": np.zeros(K, dtype=bool), "i_eval": i_eval})
+            if loop is not None:
+                status, k, nfev = loop(nfev, LOOP_NO_LIMIT if max_evals is None else max_evals, t_end, rtol, a_r)
+                if status == LOOP_STEP_TOO_SMALL:
+                    return failure(k, f"step size too small in trajectory {k} at t = {t[k]:.17g}", float(t[k]))
+                if status == LOOP_OVER_BUDGET:
+                    return over_budget()
+                return result(0, "every trajectory reached the end of the interval or stopped at an event")
 
         dot, multiply, divide, square, maximum, minimum, absolute, add, where, copyto = (
             _dot, np.multiply, np.divide, np.square, np.maximum, np.minimum, np.absolute, np.add,

@@ -44,9 +44,11 @@ class CompiledRates:
         """Machine code for DOP853's stages on the integrator's buffers (`lagrade.native.Stages`;
         ``coef`` the stage rows), or None (numpy code: llvmlite missing, or rates it could not compile).
 
-        Returns ``(run, state, rates, amax)``: ``run(s0, s1)`` evaluates stages s0 .. s1 - 1 into
-        ``Z``; then ``state`` (dim, K) is the last stage's state, ``rates`` (dim, K) its rates
-        unscaled, and ``amax`` (K,) each trajectory's largest |rate| over the stages run."""
+        Returns ``(run, state, rates, amax, columns)``: ``run(s0, s1)`` evaluates stages s0 .. s1 - 1
+        into ``Z``; then ``state`` (dim, K) is the last stage's state, ``rates`` (dim, K) its rates
+        unscaled, and ``amax`` (K,) each trajectory's largest |rate| over the stages run.
+        ``columns(buffers)`` binds the integrator's whole loop to the same kernel and buffers
+        (`lagrade.native.Stages.bind_columns`, given the other buffers by name)."""
         if not isinstance(self.f, Native):
             return None
         dim, K = self.dim, h.shape[0]
@@ -57,4 +59,5 @@ class CompiledRates:
         rates = np.empty((dim, K))
         amax = np.empty(K)
         run = native.bind(Z, T, h, coef, src, out, rates, amax)
-        return run, src[:dim], rates, amax
+        own = {"Z": Z, "T": T, "h": h, "coef": coef, "src": src, "out": out, "rates": rates, "amax": amax}
+        return run, src[:dim], rates, amax, lambda buffers: native.bind_columns({**buffers, **own})

@@ -32,6 +32,7 @@ What keeps this honest on hard scenes (measurements and reasons: docs/numerics.m
 
 from __future__ import annotations
 
+import math
 import os
 import time
 from collections.abc import Callable, Sequence
@@ -39,7 +40,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from lagrade.compare.dop853 import ColumnEvent, Event, dop853, dop853_columns
+from lagrade import native
+from lagrade.compare.dop853 import LOOP_SINGULAR, LOOP_TOO_MANY, ColumnEvent, Event, dop853, dop853_columns
 from lagrade.compare.rates import CompiledRates
 
 #: (t, y of shape (dim, K)) -> (dim, K); t is one time for the batch, or (K,) times, one per trajectory
@@ -282,7 +284,7 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
         made = hook(Z, T, h, coef)
         if made is None:
             return None
-        run, state, out, amax = made
+        run, state, out, amax, bind_columns = made
 
         def stages(s0: int, s1: int) -> None:
             nonlocal count
@@ -298,7 +300,37 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
                     t_k = float(np.max(T[s0:s1, k]))
                     raise _Singular(t_k, k, float(size[k] / limit[k] * SINGULAR_GROWTH))
 
-        return stages, state, out
+        def columns(buffers: dict[str, np.ndarray]):
+            """The integrator's whole loop in machine code, with the same count and guard."""
+            loop = bind_columns(buffers)
+            if loop is None:
+                return None
+            ints = np.zeros(len(native.COLUMN_INTS), dtype=np.int64)
+            reals = np.zeros(len(native.COLUMN_REALS))
+
+            def run_loop(nfev: int, nfev_limit: int, t_end: float, rtol: float, a_r: float) -> tuple[int, int, int]:
+                nonlocal count
+                if stopped:  # `fun` masks the stopped trajectories; the machine code would not
+                    raise RuntimeError("the native loop runs only while every trajectory is alive")
+                at = native.COLUMN_INTS.index
+                ints[at("max_count")], ints[at("nfev_limit")], ints[at("guard")] = acc.max_rhs_evals, nfev_limit, guard
+                ints[at("count")], ints[at("nfev")] = count, nfev
+                reals[:] = (t_end, rtol, a_r, lowest if guard else math.inf)
+                buffers["limit"][:] = limit if guard else math.inf
+                status = loop(ints, reals)
+                count = int(ints[at("count")])
+                k = int(ints[at("column")])
+                if status == LOOP_TOO_MANY:
+                    raise _TooManyEvaluations
+                if status == LOOP_SINGULAR:
+                    s0, s1 = int(ints[at("s0")]), int(ints[at("s1")])
+                    raise _Singular(float(np.max(T[s0:s1, k])), k,
+                                    float(amax[k] / buffers["limit"][k] * SINGULAR_GROWTH))
+                return status, k, int(ints[at("nfev")])
+
+            return run_loop
+
+        return stages, state, out, columns
 
     jac_fn = None
     if (jac if jac is not None else method in ("Radau", "BDF", "LSODA")):
