@@ -170,24 +170,36 @@ def _prepare_parent() -> None:
 
 
 def _start_forked(source: str, path: Path, wanted: list[str], limits: SandboxLimits, workdir: str):
-    """Fork the child; return the function that collects its outcome."""
+    """Fork the child (through this process's fork server, if it has one: `lagrade.answers.forkserver`);
+    return the function that collects its outcome."""
+    from lagrade.answers import forkserver
+
     name = path.name
     token = secrets.token_hex(16)  # a report without it was not written by our child code
     result_r, result_w = os.pipe()
     out_r, out_w = os.pipe()
     sys.stdout.flush()
     sys.stderr.flush()
-    pid = os.fork()
-    if pid == 0:  # child: never returns
-        _child_main(source, str(path), name, wanted, limits, workdir, result_w, out_w, token)
+    server, reap = forkserver.current(), _reap
+    pid = None
+    if server is not None:
+        try:
+            pid = server.spawn((source, str(path), name, wanted, limits, workdir, token), (result_w, out_w))
+            reap = server.reap
+        except (OSError, EOFError):
+            forkserver.stop()  # it is gone: fork here from now on
+    if pid is None:
+        pid = os.fork()
+        if pid == 0:  # child: never returns
+            _child_main(source, str(path), name, wanted, limits, workdir, result_w, out_w, token)
     os.close(result_w)
     os.close(out_w)
     started = time.monotonic()
-    return lambda: _collect(pid, name, wanted, limits, token, result_r, out_r, started)
+    return lambda: _collect(pid, name, wanted, limits, token, result_r, out_r, started, reap)
 
 
 def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, token: str, result_r: int, out_r: int,
-             started: float) -> SandboxOutcome:
+             started: float, reap=None) -> SandboxOutcome:
     deadline = started + limits.wall_seconds
     result, output = bytearray(), bytearray()
     timed_out = overflow = False
@@ -209,7 +221,7 @@ def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, toke
                         overflow = True
                 elif len(output) < 4 * STDOUT_KEEP:
                     output += chunk[: 4 * STDOUT_KEEP - len(output)]
-    exit_status, cpu_used = _reap(pid, kill=timed_out or overflow, deadline=deadline + 2)
+    exit_status, cpu_used = (reap or _reap)(pid, kill=timed_out or overflow, deadline=deadline + 2)
     os.close(result_r)
     os.close(out_r)
     stdout = output.decode("utf-8", "replace")[:STDOUT_KEEP]

@@ -57,11 +57,17 @@ class Grader:
             self.problems[pid] = problem
             _warm_up(problem)
         _warm_sympy()
+        from lagrade.answers import forkserver, sandbox
+
+        sandbox._prepare_parent()
+        forkserver.start()  # the sandbox children are forked from this warmed state from now on
 
 
     def close(self) -> None:
+        from lagrade.answers import forkserver
         from lagrade.grade import keep_references
 
+        forkserver.stop()
         for problem in self.problems.values():
             keep_references(problem)  # the next run (or `lagrade check`) starts warm
         shutil.rmtree(self.dir, ignore_errors=True)
