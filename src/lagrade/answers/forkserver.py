@@ -16,6 +16,7 @@ grading that ran out of time) are reaped anyway, so none is left a zombie.
 
 from __future__ import annotations
 
+import gc
 import os
 import pickle
 import signal
@@ -103,6 +104,10 @@ def _serve(sock: socket.socket) -> None:
     from lagrade.answers import sandbox
 
     _die_with_parent()
+    # Objects of the grader that are garbage already would close their descriptors when collected
+    # here, by number, and those numbers are reused below for the pipes of the children: frozen,
+    # they are never collected (and the collector never writes to, and so copies, their pages).
+    gc.freeze()
     keep = sock.fileno()
     os.closerange(3, keep)  # the grader's pipes to its coordinator among them: its death must show
     os.closerange(keep + 1, _max_fd())

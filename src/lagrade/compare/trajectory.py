@@ -301,8 +301,9 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
                     raise _Singular(t_k, k, float(size[k] / limit[k] * SINGULAR_GROWTH))
 
         def columns(buffers: dict[str, np.ndarray]):
-            """The integrator's whole loop in machine code, with the same count and guard."""
-            loop = bind_columns(buffers)
+            """The integrator's whole loop in machine code, with the same count and guard; not once a
+            trajectory has stopped, since `fun` masks those and the machine code would not."""
+            loop = None if stopped else bind_columns(buffers)
             if loop is None:
                 return None
             ints = np.zeros(len(native.COLUMN_INTS), dtype=np.int64)
@@ -310,8 +311,6 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
 
             def run_loop(nfev: int, nfev_limit: int, t_end: float, rtol: float, a_r: float) -> tuple[int, int, int]:
                 nonlocal count
-                if stopped:  # `fun` masks the stopped trajectories; the machine code would not
-                    raise RuntimeError("the native loop runs only while every trajectory is alive")
                 at = native.COLUMN_INTS.index
                 ints[at("max_count")], ints[at("nfev_limit")], ints[at("guard")] = acc.max_rhs_evals, nfev_limit, guard
                 ints[at("count")], ints[at("nfev")] = count, nfev
