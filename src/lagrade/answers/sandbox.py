@@ -8,8 +8,9 @@ resource limits (CPU, address space, file size, descriptors, processes), a priva
 namespace and dropped privileges where the OS allows, and finally a JSON-only channel back to the
 parent, which never unpickles or evaluates anything the child sends.
 
-The child is *forked* from the grader so the already-imported sympy is reused (importing sympy
-takes about a second; forking takes milliseconds).
+The child is *forked* from the grader (in a bulk run, from the grader's fork server: see
+:mod:`lagrade.answers.forkserver`) so the already-imported sympy is reused (importing sympy takes
+about a second; forking takes milliseconds).
 """
 
 from __future__ import annotations
