@@ -820,9 +820,9 @@ class Stages:
 
 # ----------------------------------------------------------------------------- DOP853 column loop
 
-#: ``i64 lagrade_columns(i8 **buffers, i64 *ints, double *reals)``; see `ColumnLoop`.
+#: ``i64 lagrade_columns(i8 **buffers, i64 *ints, double *reals)``; see `Stages.bind_columns`.
 _COLUMNS_SIGNATURE = ctypes.PYFUNCTYPE(ctypes.c_int64, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p)
-#: The buffers of `ColumnLoop.bind`, in the order of the pointer table the machine code reads.
+#: The buffers of `Stages.bind_columns`, in the order of the pointer table the machine code reads.
 COLUMN_BUFFERS = ("Z", "T", "h", "coef", "src", "out", "rates", "amax",  # the stage kernel's own
                   "F0", "t", "h_abs", "absa_old", "absa_new", "P", "t_eval", "samples", "E", "W", "limit",
                   "ynew", "t_new", "t_next", "C", "rejected", "active", "accepted", "i_eval")
