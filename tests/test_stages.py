@@ -104,16 +104,10 @@ def python_loop(monkeypatch):
     return use, undo
 
 
-@pytest.mark.parametrize("pid", problem_ids())
-def test_the_loop_in_machine_code_takes_the_python_loops_steps_in_every_scene(pid, python_loop):
-    """Same stages kernel, the loop around it in machine code or in Python: the same motion, and
-    the same steps to rounding. Only to rounding: the error estimate is a sum of 13 stages that
-    numpy's product may add in another order (or with fused multiply-adds), and where the motion is
-    so smooth that the estimate is rounding noise (12.29's free fall), the step sizes follow that
-    noise. So: the same outcome, samples within the integration tolerance, and a step count that
-    differs by at most one step with its dense output per 4."""
+def _both_loops(pid, python_loop):
+    """(scene, the run with the loop in machine code, the run with the loop in Python) for every
+    scene of ``pid``, over its horizon at 201 samples and over 0.7 s at 5 (a repeated one among them)."""
     use, undo = python_loop
-    same_steps = []
     for key, mech, rates, y0 in _reference_rates(pid):
         acc = ACCURACY["default"]
         for horizon, t_eval in [(mech.system.horizon, None), (0.7, np.array([0.0, 0.1, 0.1, 0.35, 0.7]))]:
@@ -121,11 +115,30 @@ def test_the_loop_in_machine_code_takes_the_python_loops_steps_in_every_scene(pi
             fast = integrate(rates, y0, horizon, acc, method="DOP853", t_eval=t_eval)
             use()
             slow = integrate(rates, y0, horizon, acc, method="DOP853", t_eval=t_eval)
-            assert fast.ok == slow.ok and fast.message == slow.message, f"{pid} {key}"
-            assert abs(fast.rhs_evals - slow.rhs_evals) <= 15 * max(1, slow.rhs_evals // 60), f"{pid} {key}"
-            assert np.allclose(fast.y, slow.y, rtol=1e-7, atol=1e-9), f"{pid} {key}"
-            same_steps.append(fast.rhs_evals == slow.rhs_evals)
-    assert same_steps.count(False) <= len(same_steps) // 2, f"{pid}: the steps differ more often than rounding explains"
+            undo()
+            yield f"{pid} {key} over {horizon}", fast, slow
+
+
+@pytest.mark.parametrize("pid", problem_ids())
+def test_the_loop_in_machine_code_integrates_what_the_python_loop_integrates_in_every_scene(pid, python_loop):
+    """Same stages kernel, the loop around it in machine code or in Python: the same outcome and
+    motion, and about the same steps. Only about: the error estimate is a sum of 13 stages that
+    numpy's product may add in another order (BLAS, fused multiply-adds), and where the motion is so
+    smooth that the estimate is rounding noise (12.29, 12.45 on the machine this was written on), the
+    step sizes follow that noise, which differs from one BLAS to another."""
+    for scene, fast, slow in _both_loops(pid, python_loop):
+        assert fast.ok == slow.ok and fast.message == slow.message, scene
+        assert np.allclose(fast.y, slow.y, rtol=1e-7, atol=1e-9), scene
+        assert abs(fast.rhs_evals - slow.rhs_evals) <= max(30, slow.rhs_evals // 4), scene
+
+
+@pytest.mark.parametrize("pid", ["12.14", "12.22", "12.37", "12.2", "12.25"])
+def test_the_loop_in_machine_code_takes_the_python_loops_steps(pid, python_loop):
+    """Where the error estimate is well above rounding (pendulums, coupled oscillators), every step
+    is accepted or rejected alike: the same number of evaluations, exactly."""
+    for scene, fast, slow in _both_loops(pid, python_loop):
+        assert fast.rhs_evals == slow.rhs_evals, scene
+        assert np.allclose(fast.y, slow.y, rtol=1e-9, atol=1e-12), scene
 
 
 def test_the_machine_code_loop_stops_where_the_python_loop_stops(python_loop):
