@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.answers import forkserver, sandbox
+from lagrade.answers import forkserver
 from lagrade.answers.rebuild import decode_value
 from lagrade.answers.sandbox import SandboxLimits, run_answer_file, start_answer_file
 
@@ -24,7 +24,6 @@ FAST = SandboxLimits(cpu_seconds=2, wall_seconds=8, memory_mb=256)
 
 @pytest.fixture
 def server():
-    sandbox._prepare_parent()
     made = forkserver.start()
     yield made
     forkserver.stop()
@@ -70,7 +69,6 @@ def test_the_server_keeps_none_of_the_graders_descriptors(tmp_path):
     would hide the death."""
     r, w = os.pipe()
     try:
-        sandbox._prepare_parent()
         forkserver.start()   # forked while this process holds w
         os.close(w)
         ready, _, _ = select.select([r], [], [], 5)
@@ -94,8 +92,7 @@ def test_children_nobody_asks_about_are_reaped(server, tmp_path):
 
 def test_the_server_dies_with_its_grader():
     code = ("import os, sys, time\n"
-            "from lagrade.answers import forkserver, sandbox\n"
-            "sandbox._prepare_parent()\n"
+            "from lagrade.answers import forkserver\n"
             "print(forkserver.start().pid, flush=True)\n"
             "time.sleep(60)\n")
     grader = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True)

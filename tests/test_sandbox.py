@@ -41,7 +41,6 @@ def fork_mode(request):
     """Every test twice: the child forked by this process (as `lagrade check` does), and by a fork
     server (as a grader does, `lagrade.answers.forkserver`)."""
     if request.param == "fork server":
-        sandbox._prepare_parent()
         forkserver.start()
     yield request.param
     if request.param == "fork server":

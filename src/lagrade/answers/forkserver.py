@@ -24,7 +24,7 @@ import socket
 import struct
 from typing import Any
 
-__all__ = ["ForkServer", "current", "start", "stop"]
+__all__ = ["ForkServer", "current", "die_with_parent", "start", "stop"]
 
 _HEADER = struct.Struct("!I")
 _MAX_KEPT = 1000  # statuses of children reaped before anyone asked, kept for a later question
@@ -79,9 +79,13 @@ _current: ForkServer | None = None
 
 def start() -> ForkServer:
     """Start this process's fork server: every sandbox child is forked by it from now on. Call it
-    once the process is warm: the children see the state it had then."""
+    once the process is warm: the children see the state it had then (with what the sandbox has a
+    parent import before forking, `lagrade.answers.sandbox._prepare_parent`)."""
+    from lagrade.answers import sandbox
+
     global _current
     stop()
+    sandbox._prepare_parent()
     _current = ForkServer()
     return _current
 
@@ -103,14 +107,14 @@ def stop() -> None:
 def _serve(sock: socket.socket) -> None:
     from lagrade.answers import sandbox
 
-    _die_with_parent()
+    die_with_parent()
     # Objects of the grader that are garbage already would close their descriptors when collected
     # here, by number, and those numbers are reused below for the pipes of the children: frozen,
     # they are never collected (and the collector never writes to, and so copies, their pages).
     gc.freeze()
     keep = sock.fileno()
     os.closerange(3, keep)  # the grader's pipes to its coordinator among them: its death must show
-    os.closerange(keep + 1, _max_fd())
+    os.closerange(keep + 1, sandbox._fd_limit())
     done: dict[int, tuple[int, float]] = {}  # reaped before the grader asked
     while True:
         try:
@@ -155,22 +159,17 @@ def _reap_finished(done: dict[int, tuple[int, float]]) -> None:
             del done[next(iter(done))]
 
 
-def _die_with_parent() -> None:
+def die_with_parent() -> None:
+    """Be killed when the parent process ends (``PR_SET_PDEATHSIG``), or leave now if it already has:
+    a grader with its coordinator, a fork server with its grader."""
     try:
-        from lagrade.answers.sandbox import _libc
+        import ctypes
 
-        _libc().prctl(1, signal.SIGKILL, 0, 0, 0)  # PR_SET_PDEATHSIG
-    except Exception:  # noqa: BLE001  (without it, the socket's end still stops the server)
+        ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, signal.SIGKILL, 0, 0, 0)  # PR_SET_PDEATHSIG
+        if os.getppid() == 1:
+            os._exit(0)
+    except Exception:  # noqa: BLE001  (a server still leaves when its socket closes)
         pass
-    if os.getppid() == 1:
-        os._exit(0)
-
-
-def _max_fd() -> int:
-    import resource
-
-    soft = resource.getrlimit(resource.RLIMIT_NOFILE)[0]
-    return soft if 0 < soft < 1 << 20 else 1 << 16
 
 
 # =========================================================================== messages

@@ -320,7 +320,12 @@ def _setup_fds(result_w: int, out_w: int) -> None:
     os.dup2(out_w, 1)
     os.dup2(out_w, 2)
     os.dup2(result_w, _RESULT_FD)
-    os.closerange(_RESULT_FD + 1, max(resource.getrlimit(resource.RLIMIT_NOFILE)[0], 1024))
+    os.closerange(_RESULT_FD + 1, _fd_limit())
+
+
+def _fd_limit() -> int:
+    """One above the highest descriptor this process may have open (for closing all the rest)."""
+    return max(resource.getrlimit(resource.RLIMIT_NOFILE)[0], 1024)
 
 
 class _CappedWriter:

@@ -57,9 +57,8 @@ class Grader:
             self.problems[pid] = problem
             _warm_up(problem)
         _warm_sympy()
-        from lagrade.answers import forkserver, sandbox
+        from lagrade.answers import forkserver
 
-        sandbox._prepare_parent()
         forkserver.start()  # the sandbox children are forked from this warmed state from now on
 
 
@@ -202,7 +201,9 @@ def failed_result(job: dict[str, Any], parts: list[tuple[str, float]], status: s
 def serve(conn: Any, parent_death_signal: bool = True) -> None:
     """The grader process's loop: warm up from the first message, then grade until EOF."""
     if parent_death_signal:
-        _die_with_parent()
+        from lagrade.answers.forkserver import die_with_parent
+
+        die_with_parent()
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the coordinator's business
     try:
         hello = conn.recv()
@@ -231,16 +232,6 @@ def serve(conn: Any, parent_death_signal: bool = True) -> None:
     finally:
         grader.close()
 
-
-def _die_with_parent() -> None:
-    try:
-        import ctypes
-
-        ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, signal.SIGKILL, 0, 0, 0)  # PR_SET_PDEATHSIG
-        if os.getppid() == 1:
-            os._exit(0)
-    except Exception:  # noqa: BLE001
-        pass
 
 
 # =========================================================================== the coordinator's handle
