@@ -134,3 +134,24 @@ def test_a_grader_forks_through_its_server_and_stops_it(tmp_path):
     finally:
         grader.close()
     assert forkserver.current() is None and not os.path.exists(f"/proc/{server.pid}")
+
+
+def test_a_fresh_process_gets_a_prepared_server(tmp_path):
+    """start() prepares the sandbox's parent side before the server forks (libc loaded once there):
+    a process that never ran an answer before still has children that do not look up libc."""
+    marker = tmp_path / "looked-up"
+    answer = _answer(tmp_path)
+    code = ("import ctypes.util, os, sys\n"
+            "from pathlib import Path\n"
+            "from lagrade.answers import forkserver\n"
+            "from lagrade.answers.sandbox import SandboxLimits, run_answer_file\n"
+            "me = os.getpid()\n"  # this process may look it up, once; its server's children not
+            "ctypes.util.find_library = lambda name: None if os.getpid() == me else Path(sys.argv[1]).write_text(name) and None\n"
+            "forkserver.start()\n"
+            "out = run_answer_file(Path(sys.argv[2]), ['L'], SandboxLimits(cpu_seconds=2, wall_seconds=8))\n"
+            "forkserver.stop()\n"
+            "print(out.status)\n")
+    done = subprocess.run([sys.executable, "-c", code, str(marker), str(answer)], capture_output=True, text=True,
+                          timeout=120)
+    assert done.stdout.strip() == "ok", done.stderr[-2000:]
+    assert not marker.exists()
