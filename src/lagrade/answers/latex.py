@@ -35,6 +35,7 @@ from typing import Any
 
 import sympy as sp
 
+from lagrade.answers import latex_subset
 from lagrade.answers.rebuild import MAX_DERIVATIVE_ORDER, RebuildError, check_int, check_name, check_power
 
 MAX_LATEX_CHARS = 2000  # sympy's ANTLR parser takes about 2 ms per character
@@ -812,6 +813,9 @@ def _sympy_parse(text: str) -> Any:
         from sympy.parsing.latex.errors import LaTeXParsingError
     except ImportError as exc:  # pragma: no cover - the dependency is declared
         raise LatexAnswerError(f"LaTeX answers need sympy's LaTeX parser: {exc}") from None
+    tree = latex_subset.read(text, _antlr_converter().sympy)
+    if tree is not None:
+        return tree
     try:
         return _parse_sll(text)
     except Exception:  # noqa: BLE001  (SLL could not decide: the full parser decides, and words the error)
