@@ -64,6 +64,59 @@ def test_the_children_are_the_servers_and_not_ours(server, tmp_path, monkeypatch
     assert out.status == "timeout" and decode_value(out.values["L"]) == 42
 
 
+def _network_namespace(pid: int | str) -> str:
+    return os.readlink(f"/proc/{pid}/ns/net")
+
+
+def _wait_until_running_the_answer(pid: int) -> None:
+    """Until the child has used 0.2 s of CPU: past its set-up, in the answer's endless loop."""
+    deadline = time.monotonic() + 5
+    while time.monotonic() < deadline:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        if int(fields[11]) >= 0.2 * os.sysconf("SC_CLK_TCK"):
+            return
+        time.sleep(0.01)
+
+
+def _can_unshare_network() -> bool:
+    """Whether this process may make network namespaces (root, or CAP_SYS_ADMIN): try in a child."""
+    pid = os.fork()
+    if pid == 0:
+        import ctypes
+
+        os._exit(0 if ctypes.CDLL("libc.so.6", use_errno=True).unshare(0x40000000) == 0 else 1)
+    return os.waitstatus_to_exitcode(os.waitpid(pid, 0)[1]) == 0
+
+
+@pytest.mark.skipif(not _can_unshare_network(), reason="no permission to make network namespaces here")
+def test_the_children_share_the_servers_empty_network_namespace_and_make_none(server, tmp_path, monkeypatch):
+    """The server makes one empty network namespace for its children; a child then makes none of its
+    own (a direct fork's child still does)."""
+    spawned = []
+    spawn = forkserver.ForkServer.spawn
+    monkeypatch.setattr(forkserver.ForkServer, "spawn", lambda self, *a: spawned.append(spawn(self, *a)) or spawned[-1])
+    ours = _network_namespace("self")
+    assert _network_namespace(server.pid) != ours
+    running = start_answer_file(_answer(tmp_path, "L = 42\nwhile True:\n    pass\n"), ["L"],
+                                SandboxLimits(cpu_seconds=1, wall_seconds=8))
+    try:
+        _wait_until_running_the_answer(spawned[0])
+        assert _network_namespace(spawned[0]) == _network_namespace(server.pid)
+    finally:
+        assert running.wait().status == "timeout"
+    forkserver.stop()
+    direct = []
+    fork = os.fork
+    monkeypatch.setattr(os, "fork", lambda: direct.append(fork()) or direct[-1])
+    running = start_answer_file(_answer(tmp_path, "L = 42\nwhile True:\n    pass\n"), ["L"],
+                                SandboxLimits(cpu_seconds=1, wall_seconds=8))
+    try:
+        _wait_until_running_the_answer(direct[0])
+        assert _network_namespace(direct[0]) != ours
+    finally:
+        assert running.wait().status == "timeout"
+
+
 def test_the_server_keeps_none_of_the_graders_descriptors(tmp_path):
     """A grader's pipe to its coordinator must close when the grader dies: a server holding a copy
     would hide the death."""

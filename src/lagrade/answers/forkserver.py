@@ -115,6 +115,7 @@ def _serve(sock: socket.socket) -> None:
     keep = sock.fileno()
     os.closerange(3, keep)  # the grader's pipes to its coordinator among them: its death must show
     os.closerange(keep + 1, sandbox._fd_limit())
+    sandbox._unshare_network()  # one empty network namespace for all the children (each made its own)
     done: dict[int, tuple[int, float]] = {}  # reaped before the grader asked
     while True:
         try:
