@@ -134,3 +134,22 @@ def test_one_writer_at_a_time(tmp_path):
             assert "another" in str(exc)
         else:
             raise AssertionError("a second writer was let in")
+
+
+def test_python_answers_are_graded_before_text_answers_each_in_folder_order(tmp_path, monkeypatch):
+    """Text answers are short: ending the queue on them keeps graders from waiting on one long file."""
+    import lagrade.bulk.runner as runner
+
+    root = tmp_path / "submissions"
+    classgen.make_class(root, 12, problems=["12.43"], hostile=False, extras=False)
+    hw = tmp_path / "hw.toml"
+    hw.write_text(classgen.assignment_toml(["12.43"]))
+    seen = []
+    monkeypatch.setattr(runner, "run_local", lambda jobs, sources, workers, done: seen.extend(jobs))
+    grade_folder(root, load_assignment(hw), tmp_path / "hw.sqlite", workers=2)
+    kinds = [job["suffix"] for job in seen]
+    assert {".py", ".toml"} <= set(kinds)
+    assert kinds == sorted(kinds, key=lambda suffix: suffix != ".py")
+    for suffix in (".py", ".toml"):
+        students = [job["student"] for job in seen if job["suffix"] == suffix]
+        assert students == sorted(students)
