@@ -7,14 +7,13 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import sympy as sp
-from sympy.core.function import AppliedUndef
 
 from lagrade.compare.trajectory import ACCURACY, Accuracy
 from lagrade.credit import Credit
 from lagrade.reference import Mechanics, ReferenceCache
 from lagrade.result import Method, PartResult
 from lagrade.spec import Part, Problem
-from lagrade.symbols import NotationError, to_state
+from lagrade.symbols import NotationError, nodes_of, to_state
 
 
 class InvalidAnswer(ValueError):
@@ -101,16 +100,16 @@ def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates:
     coords = list(mech.names)
     # A text answer reads every coordinate name of the problem as a function of t; in a system where
     # that name is a parameter (12.8: theta), it is the parameter.
-    stray = {f: sp.Symbol(f.func.__name__) for f in expr.atoms(AppliedUndef)
+    nodes = nodes_of(expr)
+    stray = {f: sp.Symbol(f.func.__name__) for f in nodes.applied
              if f.func.__name__ in params and f.args == (sp.Symbol("t"),)}
     if stray:
         expr = expr.xreplace(stray)
+        nodes = nodes_of(expr)
     allowed = {*params, "t", *part.symbols, *extra, *mech.all_names}
     if momenta:
         allowed |= {f"p_{n}" for n in coords}
-    for s in sorted(expr.free_symbols, key=str):
-        if not isinstance(s, sp.Symbol):
-            continue
+    for s in sorted(nodes.symbols, key=str):
         if s.name in coords and not plain_coordinates:
             raise InvalidAnswer(f"'{s.name}' is a plain symbol in {part.name}; a coordinate must be a function of "
                                 f"time: {s.name} = Function('{s.name}')(t), velocity {s.name}.diff(t)")
@@ -119,7 +118,7 @@ def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates:
             raise InvalidAnswer(f"unknown name '{s.name}' in {part.name}{hint}; this problem uses "
                                 f"{', '.join(sorted(allowed))}")
     try:
-        return sp.sympify(to_state(expr, list(mech.all_names), max_order=max_order, momenta_too=momenta))
+        return sp.sympify(to_state(expr, list(mech.all_names), max_order=max_order, momenta_too=momenta, nodes=nodes))
     except NotationError as exc:
         raise InvalidAnswer(f"{part.name}: {exc}") from None
 
