@@ -49,7 +49,8 @@ class CompiledRows:
         self.unknowns = list(unknowns)
         self.allargs = [*args, *unknowns]
         self.J_exprs = [sp.diff(r, u) for r in rows for u in unknowns]
-        self.linear = all(sp.diff(j, v) == 0 for j in self.J_exprs for v in unknowns)
+        # linear when no Jacobian entry depends on an unknown: only an entry that has one is differentiated
+        self.linear = all(v not in j.free_symbols or sp.diff(j, v) == 0 for j in self.J_exprs for v in unknowns)
         self._direct = None
         if self.linear and self.m == self.n:
             zero = {u: 0 for u in unknowns}
