@@ -96,10 +96,10 @@ def test_the_children_share_the_servers_empty_network_namespace_and_make_none(se
     spawn = forkserver.ForkServer.spawn
     monkeypatch.setattr(forkserver.ForkServer, "spawn", lambda self, *a: spawned.append(spawn(self, *a)) or spawned[-1])
     ours = _network_namespace("self")
-    assert _network_namespace(server.pid) != ours
     running = start_answer_file(_answer(tmp_path, "L = 42\nwhile True:\n    pass\n"), ["L"],
                                 SandboxLimits(cpu_seconds=1, wall_seconds=8))
-    try:
+    try:  # the server has answered a request: it is past its set-up
+        assert _network_namespace(server.pid) != ours
         _wait_until_running_the_answer(spawned[0])
         assert _network_namespace(spawned[0]) == _network_namespace(server.pid)
     finally:
