@@ -267,14 +267,14 @@ def _latex_goldens():
 def test_fast_sll_parse_reads_every_golden_latex_answer_as_the_full_parser_does(path, monkeypatch):
     """The fast reader and the SLL-first parse are only speed-ups: on every LaTeX answer we have, they
     must give what the full LL parser gives (values and problems alike)."""
-    from lagrade.answers import latex
+    from lagrade.answers import latex, latex_subset
     from lagrade.answers.load import load_answer
     from lagrade.library import load_problem
 
     problem = load_problem(path.parent.name)
     fast = load_answer(path, problem)
     monkeypatch.setattr(latex, "_parse_sll", lambda text: (_ for _ in ()).throw(ValueError("off")))
-    monkeypatch.setattr(latex.latex_subset, "read", lambda text, module: None)
+    monkeypatch.setattr(latex_subset, "read", lambda text, module: None)
     full = load_answer(path, problem)
     assert {k: str(v) for k, v in fast.values.items()} == {k: str(v) for k, v in full.values.items()}
     assert [str(p) for p in fast.problems] == [str(p) for p in full.problems]

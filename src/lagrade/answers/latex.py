@@ -35,7 +35,6 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.answers import latex_subset
 from lagrade.answers.rebuild import MAX_DERIVATIVE_ORDER, RebuildError, check_int, check_name, check_power
 
 MAX_LATEX_CHARS = 2000  # sympy's ANTLR parser takes about 2 ms per character
@@ -813,6 +812,8 @@ def _sympy_parse(text: str) -> Any:
         from sympy.parsing.latex.errors import LaTeXParsingError
     except ImportError as exc:  # pragma: no cover - the dependency is declared
         raise LatexAnswerError(f"LaTeX answers need sympy's LaTeX parser: {exc}") from None
+    from lagrade.answers import latex_subset  # it reads this module's names: imported once this one is
+
     tree = latex_subset.read(text, _antlr_converter().sympy)
     if tree is not None:
         return tree

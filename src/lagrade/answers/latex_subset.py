@@ -7,10 +7,10 @@ braces, ``\\frac``, ``\\sqrt`` and the elementary functions with their argument 
 This module reads that language by recursive descent in well under a millisecond and builds what
 sympy's converter (``sympy.parsing.latex._parse_latex_antlr``) builds from ANTLR's tree, node for
 node, with its quirks (``a - b`` as ``a + (-1)*b``, a letter before ``(`` as a function call, an
-``x`` between two numbers as a times sign, digits separated by spaces as one number).
+``x`` between two numbers as a times sign).
 
 Anything else (``d`` and differentials, subscripts, primes, ``|``, ``!``, commas, unknown commands,
-two ``=``, any syntax error) makes it decline with ``None``, and the caller runs sympy's parser,
+two ``=``, digits separated by spaces (one number to sympy), any syntax error) makes it decline with ``None``, and the caller runs sympy's parser,
 which then also words any error. ``tests/test_latex_subset.py`` holds it to sympy's trees on
 generated text.
 """
@@ -22,17 +22,17 @@ from typing import Any
 
 import sympy as sp
 
+from lagrade.answers.latex import GREEK
+
 #: sympy's ``func_normal`` commands, read by ``_function`` as sympy's ``convert_func`` reads them
 _FUNCTIONS = frozenset("exp log lg ln sin cos tan csc sec cot arcsin arccos arctan arccsc arcsec arccot "
                        "sinh cosh tanh arsinh arcosh artanh".split())
 #: commands the ANTLR lexer skips (``\\left`` and ``\\right`` among them)
 _SKIPPED = frozenset("quad qquad left right thinspace medspace thickspace negthinspace negmedspace "
                      "negthickspace".split())
-#: commands read as a plain name (sympy's SYMBOL); any other unknown command declines
-_NAMES = frozenset(
-    "alpha beta gamma delta epsilon varepsilon zeta eta theta vartheta iota kappa varkappa lambda mu nu xi "
-    "pi varpi rho varrho sigma varsigma tau upsilon phi varphi chi psi omega "
-    "Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega".split())
+#: commands read as a plain name (sympy's SYMBOL): the Greek letters LaTeX answers may use; any other
+#: unknown command declines
+_NAMES = frozenset(GREEK)
 _TOKEN = re.compile(r"\\[A-Za-z]+|\\.|[ \t\r\n]+|.", re.S)
 
 
