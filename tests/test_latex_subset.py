@@ -153,3 +153,24 @@ def test_the_reader_reads_every_golden_latex_answer_itself(monkeypatch):
     monkeypatch.setattr(latex_subset, "read", real_read)
     for text in read:
         assert_same_or_declined(text)
+
+
+def test_an_answer_the_reader_reads_does_not_load_sympys_latex_parser(tmp_path):
+    """Importing sympy's converter deserializes ANTLR's grammar (about 0.65 s of CPU, in every grader
+    process and every `lagrade check` of a LaTeX answer): it must wait until the reader declines.
+    A fresh interpreter, because this test session has imported it already."""
+    import subprocess
+    import sys
+
+    answer = tmp_path / "12.22.toml"
+    answer.write_text('L = "\\\\frac{1}{2} m_1 \\\\dot{x}^2 + m_1 g x"\n', encoding="utf-8")
+    probe = (
+        "import sys\n"
+        "from lagrade.answers.load import load_answer\n"
+        "from lagrade.library import load_problem\n"
+        f"loaded = load_answer(__import__('pathlib').Path({str(answer)!r}), load_problem('12.22'))\n"
+        "assert 'L' in loaded.values, loaded.problems\n"
+        "print('sympy.parsing.latex._parse_latex_antlr' in sys.modules)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["False"]

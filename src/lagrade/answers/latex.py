@@ -814,7 +814,7 @@ def _sympy_parse(text: str) -> Any:
         raise LatexAnswerError(f"LaTeX answers need sympy's LaTeX parser: {exc}") from None
     from lagrade.answers import latex_subset  # it reads this module's names: imported once this one is
 
-    tree = latex_subset.read(text, _antlr_converter().sympy)
+    tree = latex_subset.read(text, _numbers_read())  # sympy's converter is imported only if this declines
     if tree is not None:
         return tree
     try:
@@ -866,8 +866,21 @@ def _antlr_converter() -> Any:
     from sympy.parsing.latex import _parse_latex_antlr as converter
 
     if not isinstance(converter.sympy, _WholeNumbersRead):
-        converter.sympy = _WholeNumbersRead(converter.sympy)
+        converter.sympy = _numbers_read()
     return converter
+
+
+_NUMBERS_READ: _WholeNumbersRead | None = None
+
+
+def _numbers_read() -> _WholeNumbersRead:
+    """The ``sympy`` namespace both readers build with, without importing sympy's converter: that
+    import deserializes ANTLR's LaTeX grammar, 0.65 s of CPU, which an answer the subset reader reads
+    (every LaTeX answer of a class, as a rule) never needs."""
+    global _NUMBERS_READ
+    if _NUMBERS_READ is None:
+        _NUMBERS_READ = _WholeNumbersRead(sp)
+    return _NUMBERS_READ
 
 
 class _WholeNumbersRead:
