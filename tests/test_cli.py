@@ -154,3 +154,18 @@ def test_a_check_in_its_own_process_exits_with_its_code_and_all_its_output(answe
     assert [p["part"] for p in result["parts"]] == ["L", "eom", "eom_exact", "omega"]
     assert (result["score"] == result["max_score"]) == (code == 0)
     assert all(p["verdict"] == "invalid" for p in result["parts"]) == (code == 2)
+
+
+def test_the_lagrade_script_starts_one_blas_thread_unless_told_otherwise(monkeypatch):
+    """Set before any command imports numpy: every process of a check or a class saves the start of
+    OpenBLAS's thread pools, which lagrade's few-row matrices never use."""
+    from lagrade import cli
+
+    seen = []
+    monkeypatch.setattr(cli, "main", lambda: seen.append(os.environ.get("OPENBLAS_NUM_THREADS")))
+    monkeypatch.setattr(cli, "_OWN_PROCESS", False)  # run() sets it; monkeypatch puts it back
+    monkeypatch.delenv("OPENBLAS_NUM_THREADS", raising=False)
+    cli.run()
+    monkeypatch.setenv("OPENBLAS_NUM_THREADS", "3")
+    cli.run()
+    assert seen == ["1", "3"]

@@ -15,6 +15,7 @@ from typing import NoReturn
 import click
 
 from lagrade import __version__
+from lagrade.process_env import single_threaded_blas
 from lagrade.spec import Problem, SpecError
 
 EXPECTS = {
@@ -228,6 +229,7 @@ def run() -> None:
     """The ``lagrade`` console script."""
     global _OWN_PROCESS
     _OWN_PROCESS = True
+    single_threaded_blas(os.environ)
     main()
 
 

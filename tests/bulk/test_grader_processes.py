@@ -100,6 +100,7 @@ def test_a_stopped_grader_leaves_no_files_behind():
     environ = dict(kv.split("=", 1) for kv in Path(f"/proc/{g.pid}/environ").read_text().split("\0") if "=" in kv)
     assert environ["TMPDIR"] == g.dir
     assert environ["SYMPY_CACHE_SIZE"] == os.environ.get("SYMPY_CACHE_SIZE", str(SYMPY_CACHE_ENTRIES))
+    assert environ["OPENBLAS_NUM_THREADS"] == os.environ.get("OPENBLAS_NUM_THREADS", "1")
     g.stop()
     assert g.proc.returncode == 0 and not Path(g.dir).exists()
 
@@ -112,6 +113,14 @@ def test_a_grader_gets_a_larger_sympy_cache_unless_one_is_set(monkeypatch):
     assert int(env["SYMPY_CACHE_SIZE"]) == SYMPY_CACHE_ENTRIES > 1000
     monkeypatch.setenv("SYMPY_CACHE_SIZE", "500")  # an instructor's own choice wins
     assert grader_environment("/somewhere")["SYMPY_CACHE_SIZE"] == "500"
+
+
+def test_a_grader_starts_one_blas_thread_unless_told_otherwise(monkeypatch):
+    # OpenBLAS's thread pools cost CPU to start and never help lagrade's few-row matrices
+    monkeypatch.delenv("OPENBLAS_NUM_THREADS", raising=False)
+    assert grader_environment("/somewhere")["OPENBLAS_NUM_THREADS"] == "1"
+    monkeypatch.setenv("OPENBLAS_NUM_THREADS", "4")
+    assert grader_environment("/somewhere")["OPENBLAS_NUM_THREADS"] == "4"
 
 
 def test_only_this_users_folders_of_coordinators_that_no_longer_run_are_removed(tmp_path):

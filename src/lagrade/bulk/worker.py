@@ -253,10 +253,14 @@ SYMPY_CACHE_ENTRIES = 20000
 
 
 def grader_environment(directory: str) -> dict[str, str]:
-    """A grader's environment: this one's, with its folder as TMPDIR and a larger sympy cache (unless
-    SYMPY_CACHE_SIZE is set already; sympy reads it once, when it is imported)."""
+    """A grader's environment: this one's, with its folder as TMPDIR, a larger sympy cache (unless
+    SYMPY_CACHE_SIZE is set already; sympy reads it once, when it is imported) and one BLAS thread
+    (a Dask worker's graders are not started by the ``lagrade`` script)."""
+    from lagrade.process_env import single_threaded_blas
+
     env = {**os.environ, "TMPDIR": directory}
     env.setdefault("SYMPY_CACHE_SIZE", str(SYMPY_CACHE_ENTRIES))
+    single_threaded_blas(env)
     return env
 
 
