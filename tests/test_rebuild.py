@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import time
 
 import pytest
@@ -9,7 +10,16 @@ import sympy as sp
 from hypothesis import HealthCheck, assume, given, settings
 
 from expression_strategies import expressions
-from lagrade.answers.rebuild import EncodedValue, RebuildError, decode_value, rebuild_srepr, srepr_text
+from lagrade.answers.rebuild import (
+    MAX_NODES,
+    EncodedValue,
+    RebuildError,
+    decode_value,
+    expr_nodes,
+    rebuild_nodes,
+    rebuild_srepr,
+    srepr_text,
+)
 
 t = sp.Symbol("t")
 
@@ -170,3 +180,114 @@ def test_encoded_value_validation(bad):
 def test_decode_value_refuses_hostile_srepr():
     with pytest.raises(RebuildError):
         decode_value(EncodedValue(kind="expr", srepr="__import__('os')"))
+
+
+# --------------------------------------------------------------------------- the node form
+
+def _through_nodes(expr):
+    """What the grader rebuilds from the nodes a sandbox child sends (through JSON, as they travel)."""
+    nodes = expr_nodes(expr)
+    assert nodes is not None
+    return rebuild_nodes(json.loads(json.dumps(nodes)))
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow], derandomize=True)
+@given(expr=expressions)
+def test_nodes_rebuild_what_srepr_text_rebuilds(expr):
+    huge = [f for f in expr.atoms(sp.Float) if f != 0 and not 1e-300 < abs(f) < 1e300]
+    assume(not huge)
+    via_text = rebuild_srepr(srepr_text(expr))
+    via_nodes = _through_nodes(expr)
+    assert via_nodes == via_text == expr
+    assert sp.srepr(via_nodes) == sp.srepr(via_text)  # the same tree, not only an equal value
+
+
+#: values srepr writes in a form the nodes do not take: they still travel as srepr text
+_SREPR_ONLY = (sp.ImmutableMatrix, sp.Heaviside, type(sp.S.EmptySet))
+
+
+@pytest.mark.parametrize("expr", [
+    sp.Function("theta")(t).diff(t, 2),
+    sp.Eq(sp.Symbol("m", positive=True) * sp.Function("x")(t).diff(t) ** 2 / 2, sp.S.Half),
+    sp.Rational(3, 7) * sp.pi + sp.E + sp.I,
+    sp.Float("1.5"), sp.Float("1.5", 30), sp.Float("1e-400"), sp.oo, -sp.oo, sp.zoo, sp.nan,
+    sp.true, sp.false, sp.ImmutableMatrix([[1, 2], [3, sp.Symbol("a")]]),
+    sp.Piecewise((1, t > 0), (0, True)), sp.Tuple(1, 2), sp.Integral(sp.sin(t), (t, 0, 1)),
+    sp.Lt(t, 1), sp.Ne(t, 1), sp.Ge(t, 2), sp.atan2(t, 1), sp.Max(t, 1), sp.Min(t, 2),
+    sp.Heaviside(t), sp.DiracDelta(t), sp.floor(t), sp.ceiling(t), sp.re(t), sp.im(t),
+    sp.Subs(sp.Function("f")(t).diff(t), t, 0), sp.Function("f")(t, sp.Symbol("m")),
+    sp.EulerGamma, sp.GoldenRatio, sp.Catalan, sp.Symbol("x", commutative=False), sp.Dummy("z", positive=True),
+    sp.series(sp.sin(t), t, 0, 4), sp.FiniteSet(1, t), sp.S.EmptySet, sp.And(t > 0, t < 1),
+    sp.Eq(sp.Add(t, t, evaluate=False), 0, evaluate=False), -sp.Symbol("x"), sp.S.Zero, sp.S.NegativeOne,
+])
+def test_nodes_rebuild_the_examples_or_leave_them_to_srepr(expr):
+    nodes = expr_nodes(expr)
+    if isinstance(expr, _SREPR_ONLY):
+        assert nodes is None
+        return
+    assert sp.srepr(_through_nodes(expr)) == sp.srepr(rebuild_srepr(srepr_text(expr)))
+
+
+def test_a_repeated_subexpression_is_one_node():
+    th1, th2 = sp.Function("theta1")(t), sp.Function("theta2")(t)
+    m, l = sp.symbols("m l", positive=True)
+    L = m * l**2 * (th1.diff(t) ** 2 + th1.diff(t) * th2.diff(t) * sp.cos(th1 - th2)) + m * l * sp.cos(th1)
+    nodes = expr_nodes(L)
+    assert sum(n[:2] == ["Apply", "theta1"] for n in nodes) == 1
+    assert sum(n[0] == "Symbol" and n[1] == "t" for n in nodes) == 1
+    assert len(nodes) == len({json.dumps(n) for n in nodes})  # no node twice
+    assert srepr_text(L).count("Function('theta1')") == 4
+
+
+def _chain(tag, n):
+    return [["Symbol", "x", {}]] + [[tag, k, k] for k in range(n)]
+
+
+@pytest.mark.parametrize("nodes, fragment", [
+    ([], "at least one node"),
+    ("Symbol('x')", "at least one node"),
+    ([["Symbol", "x", {}], ["Add", 1, 0]], "not to an earlier node"),
+    ([["Symbol", "x", {}], ["Add", 0, -1]], "not to an earlier node"),
+    ([["Symbol", "x", {}], ["Add", 0, True]], "not to an earlier node"),
+    ([["Symbol", "x", {}], ["Add", 0, "0"]], "not to an earlier node"),
+    ([["Symbol", "x", {}], ["eval", 0]], "unknown constructor"),
+    ([["Symbol", "x", {}], ["__import__", 0]], "unknown constructor"),
+    ([["One"]], "unknown constructor"),
+    ([["Integer", 1], ["Matrix", 0]], "unknown constructor"),
+    ([[1, 2]], "starts with its kind"),
+    (["Symbol"], "starts with its kind"),
+    ([["Symbol", "x; import os", {}]], "invalid symbol name"),
+    ([["Symbol", "x", {"evil": True}]], "unsupported symbol option"),
+    ([["Symbol", "x", {"positive": "yes"}]], "unsupported symbol option"),
+    ([["Symbol", "x"]], "name and its assumptions"),
+    ([["Symbol", "t", {}], ["Apply", "f(x)", 0]], "invalid function name"),
+    ([["Apply", "f"]], "needs arguments"),
+    ([["Integer", True]], "integer literal"),
+    ([["Integer", "1"]], "integer literal"),
+    ([["Integer", 10**61]], "too large"),
+    ([["Rational", 1, 10**61]], "too large"),
+    ([["Float", "1e999999999", 53]], "malformed Float"),
+    ([["Float", "1.0", 10**9]], "precision"),
+    ([["Const", "os"]], "unknown constant"),
+    ([["Const", "None"]], "unknown constant"),
+    ([["Integer", 10], ["Integer", 10], ["Pow", 0, 1], ["Pow", 0, 2]], "number too large"),
+    ([["Symbol", "t", {}], ["Apply", "f", 0], ["Integer", 10**9], ["Tuple", 0, 2], ["Derivative", 1, 3]],
+     "derivative order"),
+    (_chain("Tuple", 40), "too large"),        # 2**40 nodes as a tree, 41 as nodes
+    ([["Symbol", "x", {}]] + [["sin", k] for k in range(150)], "nested too deeply"),
+    ([["Integer", int("9" * 60)]] * 5000, "too many digits"),
+    ([["Const", "pi"]] * (MAX_NODES + 1), "too large"),
+])
+def test_node_rejections(nodes, fragment):
+    start = time.monotonic()
+    with pytest.raises(RebuildError) as info:
+        rebuild_nodes(nodes)
+    assert fragment in str(info.value), str(info.value)
+    assert time.monotonic() - start < 1
+
+
+def test_encoded_expr_carries_nodes_or_srepr_not_both():
+    with pytest.raises(ValueError):
+        EncodedValue.model_validate({"kind": "expr", "srepr": "Symbol('x')", "nodes": [["Symbol", "x", {}]]})
+    v = EncodedValue.model_validate({"kind": "expr", "nodes": [["Symbol", "x", {}], ["Integer", 2], ["Pow", 0, 1]]})
+    assert decode_value(v) == sp.Symbol("x") ** 2

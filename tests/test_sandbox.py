@@ -284,3 +284,16 @@ def test_child_does_not_look_up_libc(tmp_path, monkeypatch):
     out = run_answer_file(write(tmp_path, "L = 1\n"), ["L"], FAST)
     assert out.status == "ok" and decode_value(out.values["L"]) == 1
     assert not marker.exists()
+
+
+def test_the_child_sends_expressions_as_nodes_and_the_rest_as_srepr(tmp_path):
+    src = ("from lagrade.answer import *\nth = Function('theta')(t)\n"
+           "L = th.diff(t)**2/2 + cos(th)\nH = Heaviside(t)\nQ = [L, 2]\n")
+    out = run_answer_file(write(tmp_path, src), ["L", "H", "Q"], FAST)
+    assert out.status == "ok", out.problems
+    assert out.values["L"].nodes is not None and out.values["L"].srepr is None
+    assert out.values["H"].srepr is not None and out.values["H"].nodes is None  # no node form: srepr
+    th = sp.Function("theta")(sp.Symbol("t"))
+    assert decode_value(out.values["L"]) == th.diff(sp.Symbol("t")) ** 2 / 2 + sp.cos(th)
+    assert decode_value(out.values["H"]) == sp.Heaviside(sp.Symbol("t"))
+    assert decode_value(out.values["Q"])[0] == decode_value(out.values["L"])

@@ -40,7 +40,7 @@ import sympy as sp
 from pydantic import BaseModel, ConfigDict, ValidationError
 
 import lagrade.answer
-from lagrade.answers.rebuild import EncodedValue, srepr_text
+from lagrade.answers.rebuild import EncodedValue, expr_nodes, srepr_text
 from lagrade.answers.screen import (
     ALLOWED_MODULES_TEXT,
     FORBIDDEN_ATTRIBUTES,
@@ -788,7 +788,7 @@ class _EncodeError(Exception):
 
 
 def _encode(value: Any, depth: int) -> dict[str, Any]:
-    """A student's value as plain JSON: sympy objects as ``srepr`` text, containers recursively."""
+    """A student's value as plain JSON: sympy objects as nodes (or ``srepr`` text), containers recursively."""
     if depth > 20:
         raise _EncodeError("is nested too deeply")
     if isinstance(value, bool):
@@ -798,7 +798,8 @@ def _encode(value: Any, depth: int) -> dict[str, Any]:
             return {"kind": "list", "items": [_encode(v, depth + 1) for v in value]}
         return {"kind": "list", "items": [_encode(list(r), depth + 1) for r in value.tolist()]}
     if isinstance(value, sp.Basic):
-        return {"kind": "expr", "srepr": srepr_text(value)}
+        nodes = expr_nodes(value)
+        return {"kind": "expr", "nodes": nodes} if nodes is not None else {"kind": "expr", "srepr": srepr_text(value)}
     if isinstance(value, int):
         if value.bit_length() > 4000:
             raise _EncodeError("is an integer too large to grade")
