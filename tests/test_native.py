@@ -295,3 +295,20 @@ def test_fastcall_switched_off_by_the_environment(monkeypatch):
     finally:
         monkeypatch.delenv("LAGRADE_FASTCALL")
         native._fastcall_possible.cache_clear()
+
+
+def test_an_answers_function_reuses_the_entry_and_stage_code_written_for_its_shape():
+    """What does not depend on the expressions (the fast-call entry point, the Runge-Kutta stage
+    loop) is written as IR once per shape: an answer pays only for its own expressions (their IR
+    took 2-2.5 ms each to write, per compiled function)."""
+    x, v, k = sp.symbols("x v k")
+    made = []
+    for c in (3, 5, 7):
+        f = native.compile_native([-c * k * x, v], [x, v, k])
+        f(np.ones(4), np.ones(4), np.ones(4))
+        f.stages(2)._build()
+        made.append(f)
+    calls, stages = native._call_ir.cache_info(), native._stages_ir.cache_info()
+    assert stages.hits >= 2
+    assert calls.hits >= 2 or not (native._fastcall_possible() and native._fastcall_works())
+    assert [f(np.full(2, 2.0), np.zeros(2), np.ones(2))[0, 0] for f in made] == [-6.0, -10.0, -14.0]

@@ -83,8 +83,17 @@ def test_a_run_takes_the_same_steps_and_gives_the_same_motion(pid):
         fast = integrate(rates, y0, mech.system.horizon, acc, method="DOP853")
         slow = integrate(python_path(rates), y0, mech.system.horizon, acc, method="DOP853")
         assert fast.ok and slow.ok
-        assert fast.rhs_evals == slow.rhs_evals
+        if not _constant_accelerations(mech):
+            assert fast.rhs_evals == slow.rhs_evals
         assert np.allclose(fast.y, slow.y, rtol=1e-7, atol=1e-9), f"{pid} {key}"
+
+
+def _constant_accelerations(mech) -> bool:
+    """A scene whose motion is a quadratic in t (12.22's pulleys): DOP853 integrates it exactly, so its
+    error estimate is rounding alone, and which steps it takes depends on the last bit of each stage's
+    arithmetic, in which the machine-code and numpy stage loops may differ."""
+    state = {*mech.s.q, *mech.s.qd}
+    return not any(a.free_symbols & state for a in mech.accelerations_symbolic)
 
 
 @pytest.fixture
@@ -105,8 +114,9 @@ def python_loop(monkeypatch):
 
 
 def _both_loops(pid, python_loop):
-    """(scene, the run with the loop in machine code, the run with the loop in Python) for every
-    scene of ``pid``, over its horizon at 201 samples and over 0.7 s at 5 (a repeated one among them)."""
+    """(scene, the run with the loop in machine code, the run with the loop in Python, whether its error
+    estimate is above rounding: see `_constant_accelerations`) for every scene of ``pid``, over its
+    horizon at 201 samples and over 0.7 s at 5 (a repeated one among them)."""
     use, undo = python_loop
     for key, mech, rates, y0 in _reference_rates(pid):
         acc = ACCURACY["default"]
@@ -116,7 +126,7 @@ def _both_loops(pid, python_loop):
             use()
             slow = integrate(rates, y0, horizon, acc, method="DOP853", t_eval=t_eval)
             undo()
-            yield f"{pid} {key} over {horizon}", fast, slow
+            yield f"{pid} {key} over {horizon}", fast, slow, not _constant_accelerations(mech)
 
 
 @pytest.mark.parametrize("pid", problem_ids())
@@ -126,7 +136,7 @@ def test_the_loop_in_machine_code_integrates_what_the_python_loop_integrates_in_
     numpy's product may add in another order (BLAS, fused multiply-adds), and where the motion is so
     smooth that the estimate is rounding noise (12.29, 12.45 on the machine this was written on), the
     step sizes follow that noise, which differs from one BLAS to another."""
-    for scene, fast, slow in _both_loops(pid, python_loop):
+    for scene, fast, slow, _ in _both_loops(pid, python_loop):
         assert fast.ok == slow.ok and fast.message == slow.message, scene
         assert np.allclose(fast.y, slow.y, rtol=1e-7, atol=1e-9), scene
         assert abs(fast.rhs_evals - slow.rhs_evals) <= max(30, slow.rhs_evals // 4), scene
@@ -136,8 +146,9 @@ def test_the_loop_in_machine_code_integrates_what_the_python_loop_integrates_in_
 def test_the_loop_in_machine_code_takes_the_python_loops_steps(pid, python_loop):
     """Where the error estimate is well above rounding (pendulums, coupled oscillators), every step
     is accepted or rejected alike: the same number of evaluations, exactly."""
-    for scene, fast, slow in _both_loops(pid, python_loop):
-        assert fast.rhs_evals == slow.rhs_evals, scene
+    for scene, fast, slow, above_rounding in _both_loops(pid, python_loop):
+        if above_rounding:
+            assert fast.rhs_evals == slow.rhs_evals, scene
         assert np.allclose(fast.y, slow.y, rtol=1e-9, atol=1e-12), scene
 
 
