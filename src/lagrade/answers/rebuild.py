@@ -1,6 +1,6 @@
-"""Rebuild sympy objects from untrusted ``srepr`` text, without ``eval``.
+"""Rebuild sympy objects from what an untrusted sandbox child sends (nodes or ``srepr`` text), without ``eval``.
 
-The sandbox sends a student's values back as text.  Evaluating it would hand the student's process a
+The sandbox sends a student's values back as JSON.  Evaluating them would hand the student's process a
 way into the grader, so only calls to an allowlist of sympy constructors are performed, on one of
 two forms: a list of nodes, each distinct subexpression once (:func:`expr_nodes`, what the child
 sends for the expressions answers are made of: it is read ten times faster), or ``sympy.srepr``
