@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from sympy.core.function import AppliedUndef
 from sympy.printing.mathml import mathml
@@ -28,7 +28,8 @@ THETA1 = "<msub><mi>&#952;</mi><mi>1</mi></msub>"
 
 
 def _fresh(value):
-    display._MATHML.clear()  # each example printed, not found in the cache
+    display._MATHML.clear()  # each example printed, not found in the caches
+    display._TEXT.clear()
     return show(value)
 
 
@@ -138,3 +139,34 @@ def test_the_same_text_is_rendered_once():
     first = _fresh(th.diff(t) ** 2)
     display._MATHML[("Pow", first[0])] = "cached"
     assert show(th.diff(t) ** 2) == (first[0], "cached")
+
+
+@SETTINGS
+@given(expr=expressions)
+def test_a_value_equal_to_one_shown_before_gets_its_own_text(expr):
+    """The text is kept by the value: an equal value built anew (as the next file's is) must print
+    as str() prints it, whatever was shown before."""
+    from lagrade.answers.rebuild import rebuild_srepr
+
+    huge = [f for f in expr.atoms(sp.Float) if f != 0 and not 1e-300 < abs(f) < 1e300]
+    assume(not huge)
+    _fresh(expr)
+    again = rebuild_srepr(sp.srepr(expr))
+    assert show(again)[0] == str(again)[:MATHML_MAX_CHARS] + (" ..." if len(str(again)) > MATHML_MAX_CHARS else "")
+    assert show([again, again])[0] == str([again, again])[:MATHML_MAX_CHARS] + (" ..." if len(str([again] * 2)) > MATHML_MAX_CHARS else "")
+
+
+def test_values_that_print_differently_are_not_one_key():
+    x = sp.Symbol("x")
+    _fresh(2 * x)
+    assert show(sp.Float(2.0) * x)[0] == "2.0*x"
+    assert show(sp.Float("1.5"))[0] == "1.50000000000000"
+    assert show(sp.Float("1.5", 30))[0] == "1.50000000000000000000000000000"  # not equal to the one above
+    assert show([2 * x])[0] == "[2*x]" and show((2 * x,))[0] == "(2*x,)"
+    assert show(sp.Symbol("x", positive=True) * 2)[0] == "2*x"
+
+
+def test_a_value_shown_again_is_not_printed_again(monkeypatch):
+    first = _fresh(th.diff(t) ** 2 + m1 * g * l1)
+    monkeypatch.setattr(display, "_text", lambda *a, **k: pytest.fail("printed again"))
+    assert show(th.diff(t) ** 2 + m1 * g * l1) == first

@@ -29,15 +29,26 @@ _DOTS = {1: "&#729;", 2: "&#168;"}  # a dot, two dots
 #: MathML by the answer's type and text, in this process (a class hands in many identical answers)
 _MATHML: dict[tuple[str, str], str | None] = {}
 _MATHML_ENTRIES = 1024
+#: text by the value itself: answers written differently are often the same value once sympy has
+#: put them in its canonical form, and sympy's equality is exact (a Float is not equal to the Integer
+#: of the same value, nor to itself at another precision, and a symbol's assumptions count)
+_TEXT: dict[Any, str] = {}
 
 
 def show(value: Any) -> tuple[str | None, str | None]:
     """The value as text and as presentation MathML (None when too large or unprintable)."""
     ordered: dict = {}
-    try:
-        text = _text(value, _Text(ordered))
-    except Exception:  # noqa: BLE001  (a value sympy cannot print is shown as nothing, not a failure)
-        return None, None
+    key = _text_key(value)
+    text = _TEXT.get(key) if key is not None else None
+    if text is None:
+        try:
+            text = _text(value, _Text(ordered))
+        except Exception:  # noqa: BLE001  (a value sympy cannot print is shown as nothing, not a failure)
+            return None, None
+        if key is not None:
+            if len(_TEXT) >= _MATHML_ENTRIES:
+                _TEXT.pop(next(iter(_TEXT)))
+            _TEXT[key] = text
     if len(text) > MATHML_MAX_CHARS:
         return text[:MATHML_MAX_CHARS] + " ...", None
     key = (type(value).__name__, text)
@@ -54,6 +65,15 @@ def show(value: Any) -> tuple[str | None, str | None]:
 
 
 # ----------------------------------------------------------------------------- text
+
+
+def _text_key(value: Any) -> Any:
+    """``value`` as a key of `_TEXT`: a sympy object, or a list or tuple of them; None otherwise."""
+    if isinstance(value, sp.Basic):
+        return value
+    if isinstance(value, (list, tuple)) and all(isinstance(v, sp.Basic) for v in value):
+        return (type(value).__name__, *value)
+    return None
 
 
 class _Text(StrPrinter):
