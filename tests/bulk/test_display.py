@@ -170,3 +170,8 @@ def test_a_value_shown_again_is_not_printed_again(monkeypatch):
     first = _fresh(th.diff(t) ** 2 + m1 * g * l1)
     monkeypatch.setattr(display, "_text", lambda *a, **k: pytest.fail("printed again"))
     assert show(th.diff(t) ** 2 + m1 * g * l1) == first
+
+
+def test_a_list_with_a_matrix_is_not_kept_and_prints_as_str():
+    value = [sp.Matrix([[1, m1]]), m1]  # a mutable Matrix is not a sympy object to key by
+    assert _fresh(value)[0] == str(value) and show(value)[0] == str(value)
