@@ -814,7 +814,7 @@ def _sympy_parse(text: str) -> Any:
         raise LatexAnswerError(f"LaTeX answers need sympy's LaTeX parser: {exc}") from None
     from lagrade.answers import latex_subset  # it reads this module's names: imported once this one is
 
-    tree = latex_subset.read(text, _numbers_read())  # sympy's converter is imported only if this declines
+    tree = latex_subset.read(text, _NUMBERS_READ)  # sympy's converter is imported only if this declines
     if tree is not None:
         return tree
     try:
@@ -866,21 +866,8 @@ def _antlr_converter() -> Any:
     from sympy.parsing.latex import _parse_latex_antlr as converter
 
     if not isinstance(converter.sympy, _WholeNumbersRead):
-        converter.sympy = _numbers_read()
+        converter.sympy = _NUMBERS_READ
     return converter
-
-
-_NUMBERS_READ: _WholeNumbersRead | None = None
-
-
-def _numbers_read() -> _WholeNumbersRead:
-    """The ``sympy`` namespace both readers build with, without importing sympy's converter: that
-    import deserializes ANTLR's LaTeX grammar, 0.65 s of CPU, which an answer the subset reader reads
-    (every LaTeX answer of a class, as a rule) never needs."""
-    global _NUMBERS_READ
-    if _NUMBERS_READ is None:
-        _NUMBERS_READ = _WholeNumbersRead(sp)
-    return _NUMBERS_READ
 
 
 class _WholeNumbersRead:
@@ -898,6 +885,12 @@ class _WholeNumbersRead:
         if len(args) == 1 and isinstance(args[0], str) and is_whole_number(args[0]):
             return sp.Integer(int(args[0]))
         return self._module.Number(*args)
+
+
+#: the ``sympy`` namespace both readers build with, made without importing sympy's converter: that
+#: import deserializes ANTLR's LaTeX grammar, 0.65 s of CPU, which an answer the subset reader reads
+#: (every LaTeX answer of a class, as a rule) never needs
+_NUMBERS_READ = _WholeNumbersRead(sp)
 
 
 def is_whole_number(text: str) -> bool:

@@ -43,7 +43,7 @@ class _Decline(Exception):
 def read(text: str, sympy_module: Any) -> Any | None:
     """sympy's tree for ``text`` (what ``parse_latex(text, strict=True)`` gives), or None.
 
-    ``sympy_module`` is the ``sympy`` namespace sympy's converter uses (``latex._numbers_read``, which
+    ``sympy_module`` is the ``sympy`` namespace sympy's converter uses (``latex._NUMBERS_READ``, which
     ``latex._antlr_converter`` installs in it), so that numbers are made by the same call."""
     try:
         tokens = _tokens(text)

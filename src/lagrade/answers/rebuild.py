@@ -14,6 +14,8 @@ from __future__ import annotations
 import ast
 import math
 import re
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any, Literal
 
 import sympy as sp
@@ -310,15 +312,22 @@ def rebuild_srepr(text: str) -> Any:
     Usually returns a ``sympy.Basic``; Python tuples/lists/dicts in the text come back as such.
     """
     tree = parse_limited(text, "srepr text")
-    try:
+    with _as_rebuild_error("srepr text"):
         return _Builder().build(tree.body, 0)  # type: ignore[attr-defined]
+
+
+@contextmanager
+def _as_rebuild_error(what: str) -> Iterator[None]:
+    """What Python or sympy raise while an object is built, as a :class:`RebuildError` naming ``what``."""
+    try:
+        yield
     except RebuildError:
         raise
     except RecursionError:
         raise RebuildError("expression nested too deeply") from None
     except (TypeError, ValueError, AttributeError, IndexError, KeyError, ZeroDivisionError,
             OverflowError, NotImplementedError, sp.SympifyError) as exc:
-        raise RebuildError(f"invalid srepr text: {type(exc).__name__}: {str(exc)[:200]}") from None
+        raise RebuildError(f"invalid {what}: {type(exc).__name__}: {str(exc)[:200]}") from None
 
 
 class _Builder:
@@ -493,7 +502,7 @@ def rebuild_nodes(nodes: Any) -> Any:
     sizes: list[int] = []
     depths: list[int] = []
     digits = 0
-    try:
+    with _as_rebuild_error("expression nodes"):
         for i, node in enumerate(nodes):
             if not isinstance(node, list) or not node or not isinstance(node[0], str):
                 raise RebuildError(f"node {i} is not a list that starts with its kind")
@@ -538,11 +547,4 @@ def rebuild_nodes(nodes: Any) -> Any:
             built.append(value)
             sizes.append(size)
             depths.append(depth)
-    except RebuildError:
-        raise
-    except RecursionError:
-        raise RebuildError("expression nested too deeply") from None
-    except (TypeError, ValueError, AttributeError, IndexError, KeyError, ZeroDivisionError,
-            OverflowError, NotImplementedError, sp.SympifyError) as exc:
-        raise RebuildError(f"invalid expression nodes: {type(exc).__name__}: {str(exc)[:200]}") from None
     return built[-1]

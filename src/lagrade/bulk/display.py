@@ -28,7 +28,7 @@ _DOTS = {1: "&#729;", 2: "&#168;"}  # a dot, two dots
 
 #: MathML by the answer's type and text, in this process (a class hands in many identical answers)
 _MATHML: dict[tuple[str, str], str | None] = {}
-_MATHML_ENTRIES = 1024
+_CACHE_ENTRIES = 1024  # each, per process
 #: text by the value itself: answers written differently are often the same value once sympy has
 #: put them in its canonical form, and sympy's equality is exact (a Float is not equal to the Integer
 #: of the same value, nor to itself at another precision, and a symbol's assumptions count)
@@ -46,7 +46,7 @@ def show(value: Any) -> tuple[str | None, str | None]:
         except Exception:  # noqa: BLE001  (a value sympy cannot print is shown as nothing, not a failure)
             return None, None
         if key is not None:
-            if len(_TEXT) >= _MATHML_ENTRIES:
+            if len(_TEXT) >= _CACHE_ENTRIES:
                 _TEXT.pop(next(iter(_TEXT)))
             _TEXT[key] = text
     if len(text) > MATHML_MAX_CHARS:
@@ -58,7 +58,7 @@ def show(value: Any) -> tuple[str | None, str | None]:
         rendered = _mathml(value, _PhysicsMathML(ordered))
     except Exception:  # noqa: BLE001
         rendered = None
-    if len(_MATHML) >= _MATHML_ENTRIES:
+    if len(_MATHML) >= _CACHE_ENTRIES:
         _MATHML.pop(next(iter(_MATHML)))
     _MATHML[key] = rendered
     return text, rendered

@@ -24,6 +24,8 @@ from multiprocessing.connection import Connection, wait
 from pathlib import Path
 from typing import Any
 
+from lagrade.process_env import single_threaded_blas
+
 #: kinds of status a submission gets; ``ok`` means the file ran (its parts carry the verdicts)
 STATUSES = ("ok", "error", "syntax", "rejected", "timeout", "memory", "crashed", "grader-timeout",
             "grader-crash")
@@ -256,8 +258,6 @@ def grader_environment(directory: str) -> dict[str, str]:
     """A grader's environment: this one's, with its folder as TMPDIR, a larger sympy cache (unless
     SYMPY_CACHE_SIZE is set already; sympy reads it once, when it is imported) and one BLAS thread
     (a Dask worker's graders are not started by the ``lagrade`` script)."""
-    from lagrade.process_env import single_threaded_blas
-
     env = {**os.environ, "TMPDIR": directory}
     env.setdefault("SYMPY_CACHE_SIZE", str(SYMPY_CACHE_ENTRIES))
     single_threaded_blas(env)
