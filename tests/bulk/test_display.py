@@ -172,6 +172,9 @@ def test_a_value_shown_again_is_not_printed_again(monkeypatch):
     assert show(th.diff(t) ** 2 + m1 * g * l1) == first
 
 
-def test_a_list_with_a_matrix_is_not_kept_and_prints_as_str():
-    value = [sp.Matrix([[1, m1]]), m1]  # a mutable Matrix is not a sympy object to key by
-    assert _fresh(value)[0] == str(value) and show(value)[0] == str(value)
+def test_a_list_with_a_mutable_matrix_prints_as_str_also_once_the_matrix_has_changed():
+    matrix = sp.Matrix([[1, m1]])
+    value = [matrix, m1]
+    assert _fresh(value)[0] == str(value) == "[Matrix([[1, m1]]), m1]"
+    matrix[0, 0] = 2  # kept by its entries when shown, not by the object
+    assert show(value)[0] == str(value) == "[Matrix([[2, m1]]), m1]"

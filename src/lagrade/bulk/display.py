@@ -20,6 +20,8 @@ from sympy.printing.mathml import MathMLPresentationPrinter
 from sympy.printing.printer import Printer
 from sympy.printing.str import StrPrinter
 
+from lagrade.answers.value_key import value_key
+
 #: answers whose text is longer get no MathML (and their text is cut): a report is read, not parsed
 MATHML_MAX_CHARS = 4000
 
@@ -29,16 +31,15 @@ _DOTS = {1: "&#729;", 2: "&#168;"}  # a dot, two dots
 #: MathML by the answer's type and text, in this process (a class hands in many identical answers)
 _MATHML: dict[tuple[str, str], str | None] = {}
 _CACHE_ENTRIES = 1024  # each, per process
-#: text by the value itself: answers written differently are often the same value once sympy has
-#: put them in its canonical form, and sympy's equality is exact (a Float is not equal to the Integer
-#: of the same value, nor to itself at another precision, and a symbol's assumptions count)
+#: text by the value itself (`value_key`): answers written differently are often the same value once
+#: sympy has put them in its canonical form
 _TEXT: dict[Any, str] = {}
 
 
 def show(value: Any) -> tuple[str | None, str | None]:
     """The value as text and as presentation MathML (None when too large or unprintable)."""
     ordered: dict = {}
-    key = _text_key(value)
+    key = value_key(value)
     text = _TEXT.get(key) if key is not None else None
     if text is None:
         try:
@@ -65,15 +66,6 @@ def show(value: Any) -> tuple[str | None, str | None]:
 
 
 # ----------------------------------------------------------------------------- text
-
-
-def _text_key(value: Any) -> Any:
-    """``value`` as a key of `_TEXT`: a sympy object, or a list or tuple of them; None otherwise."""
-    if isinstance(value, sp.Basic):
-        return value
-    if isinstance(value, (list, tuple)) and all(isinstance(v, sp.Basic) for v in value):
-        return (type(value).__name__, *value)
-    return None
 
 
 class _Text(StrPrinter):
