@@ -19,6 +19,7 @@ from lagrade.readback import as_latex, as_unicode
 from lagrade.reference import ReferenceCache, SceneError
 from lagrade.result import CheckResult, PartResult
 from lagrade.spec import Problem
+from lagrade.verdict_memo import VerdictMemo
 
 _REFERENCES: dict[int, ReferenceCache] = {}
 
@@ -47,11 +48,27 @@ def _unusable(part, verdict: str, feedback: str) -> PartResult:
                       feedback=feedback)
 
 
+def _check(ctx: Context, part, value) -> tuple[PartResult, bool]:
+    """The part's grade, and whether it is the value's own (not an error of the engine's)."""
+    try:
+        return CHECKERS[part.kind](ctx, part, value), True
+    except InvalidAnswer as exc:
+        return _unusable(part, "invalid", str(exc)), True
+    except SceneError:
+        raise
+    except Exception as exc:  # noqa: BLE001  (a grader bug must not sink the other parts)
+        if os.environ.get("LAGRADE_DEBUG"):
+            raise
+        return _unusable(part, "invalid", f"lagrade could not grade this part ({type(exc).__name__}: "
+                                          f"{exc}); please report it to your instructor"), False
+
+
 def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "default",
                  only: list[str] | None = None, hints: bool = False, credit: Credit | None = None,
-                 read_as: tuple[str, ...] = ("latex", "unicode")) -> CheckResult:
+                 read_as: tuple[str, ...] = ("latex", "unicode"), memo: VerdictMemo | None = None) -> CheckResult:
     """Grade every part; ``read_as`` says which echoes of the answer to render (pretty-printing a
-    long expression can cost a tenth of a second, so a caller asks only for what it shows)."""
+    long expression can cost a tenth of a second, so a caller asks only for what it shows). A process
+    that grades many answers passes a ``memo``: a value graded before gets the verdict it got."""
     ctx = Context(problem, references(problem), ACCURACY[accuracy], hints=hints, credit=credit or Credit())
     parts = []
     for part in problem.parts:
@@ -67,17 +84,12 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
                 parts.append(_unusable(part, "missing", f"no value bound to '{part.name}'"))
             continue
         value = answer.values[part.name]
-        try:
-            graded_part = CHECKERS[part.kind](ctx, part, value)
-        except InvalidAnswer as exc:
-            graded_part = _unusable(part, "invalid", str(exc))
-        except SceneError:
-            raise
-        except Exception as exc:  # noqa: BLE001  (a grader bug must not sink the other parts)
-            if os.environ.get("LAGRADE_DEBUG"):
-                raise
-            graded_part = _unusable(part, "invalid", f"lagrade could not grade this part ({type(exc).__name__}: "
-                                                     f"{exc}); please report it to your instructor")
+        key = memo.key(ctx, part, value) if memo is not None else None
+        graded_part = memo.get(key) if key is not None else None
+        if graded_part is None:
+            graded_part, own = _check(ctx, part, value)
+            if key is not None and own:
+                memo.put(key, graded_part)
         if "latex" in read_as:
             graded_part.read_as = as_latex(value)
         if "unicode" in read_as:

@@ -166,3 +166,24 @@ def test_a_grader_folder_names_its_coordinator():
         assert m and int(m.group(1)) == _pid_namespace() and int(m.group(2)) == os.getpid()
     finally:
         g.kill()
+
+
+def test_a_grader_gives_a_value_it_graded_before_the_verdict_it_got():
+    """A class hands in the same values again and again (here the reference, in a file of its own):
+    the grader's memo gives each part the verdict and feedback it got, without grading it again."""
+    from lagrade.bulk.worker import Grader
+    from lagrade.library import load_problem
+
+    grader = Grader({"12.14": problem_path("12.14").read_text()})
+    try:
+        data = (reference_dir() / "12.14" / "answer.py").read_bytes()
+        limits = {"cpu_seconds": 10, "wall_seconds": 20, "memory_mb": 512, "grading_seconds": 60}
+        job = {"student": "a", "problem": "12.14", "suffix": ".py", "data": data, "accuracy": "default",
+               "limits": limits, "credit": None, "parts": [], "file_hash": ""}
+        first = grader.grade(job)
+        hits = grader.memo.hits
+        again = grader.grade({**job, "student": "b", "data": b"# written by b\n" + data})
+        assert grader.memo.hits - hits == len(load_problem("12.14").parts)
+        assert again["parts"] == first["parts"] and again["score"] == first["score"] == first["max_score"]
+    finally:
+        grader.close()

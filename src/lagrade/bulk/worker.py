@@ -45,7 +45,9 @@ class Grader:
         coordinator makes it, so that it can remove it when it has to kill this process."""
         from lagrade.grade import references
         from lagrade.library import load_problem
+        from lagrade.verdict_memo import VerdictMemo
 
+        self.memo = VerdictMemo()  # a class hands in the same values again and again
         self.dir = Path(directory) if directory else Path(tempfile.mkdtemp(prefix=_folder_prefix()))
         (self.dir / "problems").mkdir(mode=0o700, exist_ok=True)  # the folder itself is traversable
         self.problems = {}
@@ -94,7 +96,7 @@ class Grader:
                                                                memory_mb=limits["memory_mb"]))
             result = grade_values(problem, loaded, job["accuracy"],
                                   credit=Credit.model_validate(job["credit"]) if job.get("credit") else None,
-                                  read_as=())  # the gradebook keeps its own text and MathML (display.show)
+                                  read_as=(), memo=self.memo)  # the gradebook keeps its own text and MathML
             parts = []
             for p in result.parts:
                 row = p.model_dump(exclude={"read_as"})
