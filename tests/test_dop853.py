@@ -327,8 +327,10 @@ def test_nan_from_fun_fails_instead_of_looping():
     assert r.status == -1
     assert "step size too small" in r.message
     assert r.nfev < 5000
-    # the samples before the failure (steps get ever closer to t = 1 from below) are returned
-    np.testing.assert_array_equal(r.t, t_eval[t_eval < 1.0])
+    # the samples before the failure are returned: steps get ever closer to t = 1 from below, and the
+    # last may end on t = 1 itself (t + h rounds to 1), where fun is still finite, as on an AMD EPYC
+    np.testing.assert_array_equal(r.t, t_eval[: r.t.size])
+    assert t_eval[t_eval < 1.0].size <= r.t.size <= t_eval[t_eval <= 1.0].size
     assert np.all(np.isfinite(r.y))
 
 
