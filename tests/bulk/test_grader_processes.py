@@ -169,8 +169,9 @@ def test_a_grader_folder_names_its_coordinator():
 
 
 def test_a_grader_gives_a_value_it_graded_before_the_verdict_it_got():
-    """A class hands in the same values again and again (here the reference, in a file of its own):
-    the grader's memo gives each part the verdict and feedback it got, without grading it again."""
+    """A class hands in the same values again and again (here the reference, in files of their own):
+    the grader's memo gives each part the verdict and feedback it got, without grading it again. The
+    warm-up's grading of the reference solution is the first entry."""
     from lagrade.bulk.worker import Grader
     from lagrade.library import load_problem
 
@@ -180,10 +181,11 @@ def test_a_grader_gives_a_value_it_graded_before_the_verdict_it_got():
         limits = {"cpu_seconds": 10, "wall_seconds": 20, "memory_mb": 512, "grading_seconds": 60}
         job = {"student": "a", "problem": "12.14", "suffix": ".py", "data": data, "accuracy": "default",
                "limits": limits, "credit": None, "parts": [], "file_hash": ""}
+        parts = len(load_problem("12.14").parts)
+        assert grader.memo.hits == 0 and len(grader.memo._kept) == parts  # the warm-up graded the reference
         first = grader.grade(job)
-        hits = grader.memo.hits
         again = grader.grade({**job, "student": "b", "data": b"# written by b\n" + data})
-        assert grader.memo.hits - hits == len(load_problem("12.14").parts)
+        assert grader.memo.hits == 2 * parts
         assert again["parts"] == first["parts"] and again["score"] == first["score"] == first["max_score"]
     finally:
         grader.close()

@@ -59,7 +59,7 @@ class Grader:
             for system in problem.systems:
                 refs[system.key]
             self.problems[pid] = problem
-            _warm_up(problem)
+            _warm_up(problem, self.memo)
         _warm_sympy()
         from lagrade.answers import forkserver
 
@@ -122,13 +122,14 @@ class Grader:
         }
 
 
-def _warm_up(problem) -> None:
+def _warm_up(problem, memo=None) -> None:
     """Grade the problem's reference solution (trusted: it ships with lagrade) once before the class.
 
     Running it in this process too fills sympy's caches with the expressions a correct answer
     builds; every sandbox child is forked from here, so a student's answer then costs a few
     milliseconds to run instead of 40 (sympy otherwise re-derives the assumptions of each new
-    expression in every child). Grading it compiles and integrates what the answers will share."""
+    expression in every child). Grading it compiles and integrates what the answers will share, and
+    gives the ``memo`` the reference's own verdicts (many answers share some of its values)."""
     from lagrade.answers.load import load_answer
     from lagrade.grade import grade_values
     from lagrade.library import reference_dir
@@ -138,7 +139,7 @@ def _warm_up(problem) -> None:
         return
     try:
         exec(compile(answer.read_text(encoding="utf-8"), str(answer), "exec"), {"__name__": "__reference__"})  # noqa: S102
-        grade_values(problem, load_answer(answer, problem), read_as=())
+        grade_values(problem, load_answer(answer, problem), read_as=(), memo=memo)
     except Exception:  # noqa: BLE001  (a warm-up that fails only costs speed)
         pass
 
