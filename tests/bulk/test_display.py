@@ -28,9 +28,16 @@ THETA1 = "<msub><mi>&#952;</mi><mi>1</mi></msub>"
 
 
 def _fresh(value):
-    display._MATHML.clear()  # each example printed, not found in the caches
-    display._TEXT.clear()
+    display._MATHML.clear()  # each example printed, not found whole in the caches (its parts may be,
+    display._TEXT.clear()    # from earlier examples, as in a class)
     return show(value)
+
+
+def _unkept(value, monkeypatch):
+    """``value`` printed with no cache at all."""
+    with monkeypatch.context() as m:
+        m.setattr(display, "_compound", lambda *args: False)
+        return _fresh(value)
 
 
 def _well_formed(markup: str) -> None:
@@ -178,3 +185,46 @@ def test_a_list_with_a_mutable_matrix_prints_as_str_also_once_the_matrix_has_cha
     assert _fresh(value)[0] == str(value) == "[Matrix([[1, m1]]), m1]"
     matrix[0, 0] = 2  # kept by its entries when shown, not by the object
     assert show(value)[0] == str(value) == "[Matrix([[2, m1]]), m1]"
+
+
+@SETTINGS
+@given(a=expressions.filter(lambda e: isinstance(e, sp.Expr)), b=expressions.filter(lambda e: isinstance(e, sp.Expr)))
+def test_a_value_whose_parts_were_shown_before_prints_as_without_them(a, b):
+    """Subexpressions are printed once per grader: a value made of parts shown before (an answer with
+    one more term, an equation times a constant) prints as str() does, and as if nothing was kept."""
+    import _pytest.monkeypatch
+
+    for value in (a, b, [a, b]):
+        _fresh(value)
+    for value in (a + b, sp.Eq(a, 2 * b), [b, sp.sin(a)], {"x": a * b}):
+        text, markup = _fresh(value)
+        assert text == str(value)[:MATHML_MAX_CHARS] + (" ..." if len(str(value)) > MATHML_MAX_CHARS else "")
+        with _pytest.monkeypatch.MonkeyPatch.context() as mp:
+            assert (text, markup) == _unkept(value, mp)
+
+
+def test_a_float_prints_alone_at_full_precision_and_inside_without_trailing_zeros():
+    x = sp.Symbol("x")
+    half = sp.Float("1.5")
+    display._PART_TEXT.clear()
+    assert _fresh(x + half)[0] == "x + 1.5" and _fresh(sp.sin(x + half))[0] == "sin(x + 1.5)"
+    assert _fresh(half)[0] == "1.50000000000000" and _fresh([half, x + half])[0] == "[1.50000000000000, x + 1.5]"
+
+
+def test_a_part_is_printed_once(monkeypatch):
+    x = sp.Symbol("x")
+    inner = sp.cos(th) * m1 * g * l1
+    _fresh(inner + x)
+    monkeypatch.setattr(display._Text, "_print_Mul", lambda *a, **k: pytest.fail("printed again"))
+    monkeypatch.setattr(display._PhysicsMathML, "_print_Mul", lambda *a, **k: pytest.fail("printed again"))
+    assert _fresh(inner + x**2)[0] == str(inner + x**2)
+
+
+def test_the_parts_kept_are_bounded(monkeypatch):
+    monkeypatch.setattr(display, "_PART_ENTRIES", 5)
+    display._PART_TEXT.clear()
+    display._PART_MATHML.clear()
+    x = sp.Symbol("x")
+    for k in range(20):
+        _fresh(sp.sin(x + k) * sp.cos(x - k))
+    assert len(display._PART_TEXT) == len(display._PART_MATHML) == 5

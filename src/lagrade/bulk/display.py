@@ -1,12 +1,14 @@
 """How a student's answer is shown in the gradebook: as text, and as presentation MathML for the report.
 
 Both are made in the grader for every part of every file, so their cost is part of a class's: with
-sympy's own printers it was about a fifth of what lagrade spends per file when the answers differ
-(a class copies few answers, and the MathML of a repeated text is cached). Two things made them slow:
-sympy's MathML printer builds an ``xml.dom.minidom`` tree and serialises it, and both printers sort
-the terms of every sum (``as_ordered_terms``), each on its own. Here the MathML printer builds the same
-markup as strings, and the two printers share one ordering of each sum. The text is exactly
-``str(value)``; the MathML is sympy's, except that coordinates are written as a physicist writes them.
+sympy's own printers it was about a fifth of what lagrade spends per file when the answers differ.
+Three things made them slow: sympy's MathML printer builds an ``xml.dom.minidom`` tree and
+serialises it, both printers sort the terms of every sum (``as_ordered_terms``), each on its own,
+and answers that differ are printed whole though they share most of their terms. Here the MathML
+printer builds the same markup as strings, the two printers share one ordering of each sum, and
+what is printed is kept per process: a value's text and MathML, and those of every compound
+subexpression. The text is exactly ``str(value)``; the MathML is sympy's, except that coordinates
+are written as a physicist writes them.
 """
 
 from __future__ import annotations
@@ -34,6 +36,29 @@ _CACHE_ENTRIES = 1024  # each, per process
 #: text by the value itself (`value_key`): answers written differently are often the same value once
 #: sympy has put them in its canonical form
 _TEXT: dict[Any, str] = {}
+#: text and MathML of the compound subexpressions of values, by the subexpression: answers that
+#: differ still share most of their terms (an extra term in L, an equation times a constant). Atoms
+#: are printed each time: sympy prints a Float alone at full precision, inside a compound without
+#: trailing zeros (the only place its printers look at the depth)
+_PART_TEXT: dict[Any, str] = {}
+_PART_MATHML: dict[Any, str] = {}
+_PART_ENTRIES = 8192  # each, per process
+
+
+def _kept_part(kept: dict[Any, str], expr: Any, make) -> str:
+    """``make()``, printed once per subexpression (the oldest dropped first past the bound)."""
+    printed = kept.get(expr)
+    if printed is None:
+        printed = make()
+        if len(kept) >= _PART_ENTRIES:
+            kept.pop(next(iter(kept)))
+        kept[expr] = printed
+    return printed
+
+
+def _compound(expr: Any, kwargs: dict) -> bool:
+    """A sympy object with arguments, printed with nothing but itself to go on."""
+    return not kwargs and isinstance(expr, sp.Basic) and bool(expr.args)
 
 
 def show(value: Any) -> tuple[str | None, str | None]:
@@ -77,6 +102,11 @@ class _Text(StrPrinter):
 
     def _as_ordered_terms(self, expr, order=None):
         return _ordered_terms(self, expr, order)
+
+    def _print(self, expr, **kwargs):
+        if not _compound(expr, kwargs):
+            return super()._print(expr, **kwargs)
+        return _kept_part(_PART_TEXT, expr, lambda: super(_Text, self)._print(expr))
 
 
 def _text(value: Any, printer: _Text, nested: bool = False) -> str:
@@ -131,6 +161,12 @@ class _PhysicsMathML(MathMLPresentationPrinter):
 
     def _as_ordered_terms(self, expr, order=None):
         return _ordered_terms(self, expr, order)
+
+    def _print(self, expr, **kwargs):
+        if not _compound(expr, kwargs):
+            return super()._print(expr, **kwargs)
+        # kept as markup: sympy's printer only appends what it gets to elements of its own
+        return _RawText(_kept_part(_PART_MATHML, expr, lambda: super(_PhysicsMathML, self)._print(expr).toxml()))
 
     def _print_AppliedUndef(self, e):
         if e.args == (_T,):
