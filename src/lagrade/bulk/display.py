@@ -36,24 +36,41 @@ _CACHE_ENTRIES = 1024  # each, per process
 #: text by the value itself (`value_key`): answers written differently are often the same value once
 #: sympy has put them in its canonical form
 _TEXT: dict[Any, str] = {}
-#: text and MathML of the compound subexpressions of values, by the subexpression: answers that
-#: differ still share most of their terms (an extra term in L, an equation times a constant). Atoms
-#: are printed each time: sympy prints a Float alone at full precision, inside a compound without
-#: trailing zeros (the only place its printers look at the depth)
-_PART_TEXT: dict[Any, str] = {}
-_PART_MATHML: dict[Any, str] = {}
+
+
+class _Parts:
+    """Printed subexpressions by the subexpression, the oldest dropped first past `_PART_ENTRIES` of
+    them or `_PART_CHARS` characters in all."""
+
+    def __init__(self) -> None:
+        self.printed: dict[Any, str] = {}
+        self.chars = 0
+
+    def get(self, expr: Any, make) -> str:
+        """``make()``, printed once per subexpression."""
+        printed = self.printed.get(expr)
+        if printed is None:
+            printed = make()
+            if len(printed) > _PART_CHARS:  # it would push out everything else
+                return printed
+            self.printed[expr] = printed
+            self.chars += len(printed)
+            while len(self.printed) > _PART_ENTRIES or self.chars > _PART_CHARS:
+                self.chars -= len(self.printed.pop(next(iter(self.printed))))
+        return printed
+
+    def clear(self) -> None:
+        self.printed.clear()
+        self.chars = 0
+
+
+#: text and MathML of the compound subexpressions of values: answers that differ still share most of
+#: their terms (an extra term in L, an equation times a constant). Atoms are printed each time: sympy
+#: prints a Float alone at full precision, inside a compound without trailing zeros (the only place
+#: its printers look at the depth)
+_PART_TEXT, _PART_MATHML = _Parts(), _Parts()
 _PART_ENTRIES = 8192  # each, per process
-
-
-def _kept_part(kept: dict[Any, str], expr: Any, make) -> str:
-    """``make()``, printed once per subexpression (the oldest dropped first past the bound)."""
-    printed = kept.get(expr)
-    if printed is None:
-        printed = make()
-        if len(kept) >= _PART_ENTRIES:
-            kept.pop(next(iter(kept)))
-        kept[expr] = printed
-    return printed
+_PART_CHARS = 8_000_000  # each: about 16 MB of text per grader at most
 
 
 def _compound(expr: Any, kwargs: dict) -> bool:
@@ -106,7 +123,7 @@ class _Text(StrPrinter):
     def _print(self, expr, **kwargs):
         if not _compound(expr, kwargs):
             return super()._print(expr, **kwargs)
-        return _kept_part(_PART_TEXT, expr, lambda: super(_Text, self)._print(expr))
+        return _PART_TEXT.get(expr, lambda: super(_Text, self)._print(expr))
 
 
 def _text(value: Any, printer: _Text, nested: bool = False) -> str:
@@ -166,7 +183,7 @@ class _PhysicsMathML(MathMLPresentationPrinter):
         if not _compound(expr, kwargs):
             return super()._print(expr, **kwargs)
         # kept as markup: sympy's printer only appends what it gets to elements of its own
-        return _RawText(_kept_part(_PART_MATHML, expr, lambda: super(_PhysicsMathML, self)._print(expr).toxml()))
+        return _RawText(_PART_MATHML.get(expr, lambda: super(_PhysicsMathML, self)._print(expr).toxml()))
 
     def _print_AppliedUndef(self, e):
         if e.args == (_T,):
