@@ -20,7 +20,6 @@ from lagrade.verdict_memo import VerdictMemo
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from test_named_mistakes import _as_answer  # noqa: E402
 
-ROOT = Path(__file__).resolve().parents[1]
 
 
 def _anew(value):

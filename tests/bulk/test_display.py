@@ -192,14 +192,12 @@ def test_a_list_with_a_mutable_matrix_prints_as_str_also_once_the_matrix_has_cha
 def test_a_value_whose_parts_were_shown_before_prints_as_without_them(a, b):
     """Subexpressions are printed once per grader: a value made of parts shown before (an answer with
     one more term, an equation times a constant) prints as str() does, and as if nothing was kept."""
-    import _pytest.monkeypatch
-
     for value in (a, b, [a, b]):
         _fresh(value)
     for value in (a + b, sp.Eq(a, 2 * b), [b, sp.sin(a)], {"x": a * b}):
         text, markup = _fresh(value)
         assert text == str(value)[:MATHML_MAX_CHARS] + (" ..." if len(str(value)) > MATHML_MAX_CHARS else "")
-        with _pytest.monkeypatch.MonkeyPatch.context() as mp:
+        with pytest.MonkeyPatch.context() as mp:
             assert (text, markup) == _unkept(value, mp)
 
 
