@@ -196,7 +196,14 @@ def test_a_value_whose_parts_were_shown_before_prints_as_without_them(a, b):
         _fresh(value)
     for value in (a + b, sp.Eq(a, 2 * b), [b, sp.sin(a)], {"x": a * b}):
         text, markup = _fresh(value)
-        assert text == str(value)[:MATHML_MAX_CHARS] + (" ..." if len(str(value)) > MATHML_MAX_CHARS else "")
+        try:
+            expected = str(value)
+        except TypeError:  # sympy cannot print it (an ordering that compares NaN): shown as nothing
+            expected = None
+        if expected is None:
+            assert text is None and markup is None
+        else:
+            assert text == expected[:MATHML_MAX_CHARS] + (" ..." if len(expected) > MATHML_MAX_CHARS else "")
         with pytest.MonkeyPatch.context() as mp:
             assert (text, markup) == _unkept(value, mp)
 
