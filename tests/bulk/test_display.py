@@ -226,16 +226,17 @@ def test_a_part_is_printed_once(monkeypatch):
 
 
 def test_the_parts_kept_are_bounded_in_number_and_size(monkeypatch):
-    monkeypatch.setattr(display, "_PART_ENTRIES", 5)
-    display._PART_TEXT.clear()
-    display._PART_MATHML.clear()
+    for kept in (display._PART_TEXT, display._PART_MATHML):
+        monkeypatch.setattr(kept, "entries", 5)
+        kept.clear()
     x = sp.Symbol("x")
     for k in range(20):
         _fresh(sp.sin(x + k) * sp.cos(x - k))
-    assert len(display._PART_TEXT.printed) == len(display._PART_MATHML.printed) == 5
-    monkeypatch.setattr(display, "_PART_ENTRIES", 8192)
-    monkeypatch.setattr(display, "_PART_CHARS", 300)
+    assert len(display._PART_TEXT) == len(display._PART_MATHML) == 5
+    for kept in (display._PART_TEXT, display._PART_MATHML):
+        monkeypatch.setattr(kept, "entries", 8192)
+        monkeypatch.setattr(kept, "max_chars", 300)
     long = sp.Add(*(sp.Symbol(f"x_{k}") * sp.cos(sp.Symbol(f"y_{k}")) for k in range(40)))
     assert _fresh(sp.sin(long))[0] == str(sp.sin(long))
     for kept in (display._PART_TEXT, display._PART_MATHML):
-        assert kept.chars == sum(map(len, kept.printed.values())) <= 300 and kept.printed
+        assert kept.chars == sum(map(len, kept.values())) <= 300 and kept

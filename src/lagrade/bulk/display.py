@@ -30,47 +30,48 @@ MATHML_MAX_CHARS = 4000
 _T = sp.Symbol("t")
 _DOTS = {1: "&#729;", 2: "&#168;"}  # a dot, two dots
 
-#: MathML by the answer's type and text, in this process (a class hands in many identical answers)
-_MATHML: dict[tuple[str, str], str | None] = {}
-_CACHE_ENTRIES = 1024  # each, per process
-#: text by the value itself (`value_key`): answers written differently are often the same value once
-#: sympy has put them in its canonical form
-_TEXT: dict[Any, str] = {}
+class _Kept(dict):
+    """What was printed, by key, in this process: the oldest dropped first past ``entries`` of them
+    or ``chars`` characters in all (one longer than that alone is not kept: it would push out the rest)."""
 
+    def __init__(self, entries: int, chars: int | None = None) -> None:
+        super().__init__()
+        self.entries, self.max_chars, self.chars = entries, chars, 0
 
-class _Parts:
-    """Printed subexpressions by the subexpression, the oldest dropped first past `_PART_ENTRIES` of
-    them or `_PART_CHARS` characters in all."""
+    def keep(self, key: Any, printed: str | None) -> None:
+        size = len(printed or "")
+        if self.max_chars is not None and size > self.max_chars:
+            return
+        self[key] = printed
+        self.chars += size
+        while len(self) > self.entries or (self.max_chars is not None and self.chars > self.max_chars):
+            self.chars -= len(self.pop(next(iter(self))) or "")
 
-    def __init__(self) -> None:
-        self.printed: dict[Any, str] = {}
-        self.chars = 0
-
-    def get(self, expr: Any, make) -> str:
-        """``make()``, printed once per subexpression."""
-        printed = self.printed.get(expr)
+    def printed(self, key: Any, make) -> str:
+        """``make()``, printed once per key."""
+        printed = self.get(key)
         if printed is None:
             printed = make()
-            if len(printed) > _PART_CHARS:  # it would push out everything else
-                return printed
-            self.printed[expr] = printed
-            self.chars += len(printed)
-            while len(self.printed) > _PART_ENTRIES or self.chars > _PART_CHARS:
-                self.chars -= len(self.printed.pop(next(iter(self.printed))))
+            self.keep(key, printed)
         return printed
 
     def clear(self) -> None:
-        self.printed.clear()
+        super().clear()
         self.chars = 0
 
 
+_CACHE_ENTRIES = 1024  # each, per process
+#: MathML by the answer's type and text (a class hands in many identical answers)
+_MATHML = _Kept(_CACHE_ENTRIES)
+#: text by the value itself (`value_key`): answers written differently are often the same value once
+#: sympy has put them in its canonical form
+_TEXT = _Kept(_CACHE_ENTRIES)
 #: text and MathML of the compound subexpressions of values: answers that differ still share most of
 #: their terms (an extra term in L, an equation times a constant). Atoms are printed each time: sympy
 #: prints a Float alone at full precision, inside a compound without trailing zeros (the only place
-#: its printers look at the depth)
-_PART_TEXT, _PART_MATHML = _Parts(), _Parts()
-_PART_ENTRIES = 8192  # each, per process
-_PART_CHARS = 8_000_000  # each: about 16 MB of text per grader at most
+#: its printers look at the depth). About 16 MB of text per grader at most.
+_PART_TEXT = _Kept(8192, chars=8_000_000)
+_PART_MATHML = _Kept(8192, chars=8_000_000)
 
 
 def _compound(expr: Any, kwargs: dict) -> bool:
@@ -89,9 +90,7 @@ def show(value: Any) -> tuple[str | None, str | None]:
         except Exception:  # noqa: BLE001  (a value sympy cannot print is shown as nothing, not a failure)
             return None, None
         if key is not None:
-            if len(_TEXT) >= _CACHE_ENTRIES:
-                _TEXT.pop(next(iter(_TEXT)))
-            _TEXT[key] = text
+            _TEXT.keep(key, text)
     if len(text) > MATHML_MAX_CHARS:
         return text[:MATHML_MAX_CHARS] + " ...", None
     key = (type(value).__name__, text)
@@ -101,9 +100,7 @@ def show(value: Any) -> tuple[str | None, str | None]:
         rendered = _mathml(value, _PhysicsMathML(ordered))
     except Exception:  # noqa: BLE001
         rendered = None
-    if len(_MATHML) >= _CACHE_ENTRIES:
-        _MATHML.pop(next(iter(_MATHML)))
-    _MATHML[key] = rendered
+    _MATHML.keep(key, rendered)
     return text, rendered
 
 
@@ -123,7 +120,7 @@ class _Text(StrPrinter):
     def _print(self, expr, **kwargs):
         if not _compound(expr, kwargs):
             return super()._print(expr, **kwargs)
-        return _PART_TEXT.get(expr, lambda: super(_Text, self)._print(expr))
+        return _PART_TEXT.printed(expr, lambda: super(_Text, self)._print(expr))
 
 
 def _text(value: Any, printer: _Text, nested: bool = False) -> str:
@@ -183,7 +180,7 @@ class _PhysicsMathML(MathMLPresentationPrinter):
         if not _compound(expr, kwargs):
             return super()._print(expr, **kwargs)
         # kept as markup: sympy's printer only appends what it gets to elements of its own
-        return _RawText(_PART_MATHML.get(expr, lambda: super(_PhysicsMathML, self)._print(expr).toxml()))
+        return _RawText(_PART_MATHML.printed(expr, lambda: super(_PhysicsMathML, self)._print(expr).toxml()))
 
     def _print_AppliedUndef(self, e):
         if e.args == (_T,):
