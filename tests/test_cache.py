@@ -129,7 +129,11 @@ def test_answers_can_never_read_the_cache(monkeypatch, tmp_path):
     from lagrade.answers import sandbox
 
     monkeypatch.setenv("LAGRADE_CACHE", str(tmp_path / "c"))
-    assert str((tmp_path / "c").resolve()) in sandbox._secret_dirs()
+    sandbox.secret_dirs.cache_clear()
+    try:
+        assert str((tmp_path / "c").resolve()) in sandbox.secret_dirs()
+    finally:
+        sandbox.secret_dirs.cache_clear()
 
 
 def test_cache_commands(tmp_path):

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from lagrade.answers import forkserver, sandbox
+from lagrade.answers import sandbox
 from lagrade.answers.rebuild import decode_value
 from lagrade.answers.sandbox import SandboxLimits, run_answer_file
 
@@ -34,18 +34,6 @@ period = 2*pi*sqrt(l/g)
 M = Matrix([[1, 2], [3, 4]])
 print("some output")
 """
-
-
-@pytest.fixture(autouse=True, params=["forked here", "fork server"])
-def fork_mode(request):
-    """Every test twice: the child forked by this process (as `lagrade check` does), and by a fork
-    server (as a grader does, `lagrade.answers.forkserver`)."""
-    if request.param == "fork server":
-        forkserver.start()
-    yield request.param
-    if request.param == "fork server":
-        assert forkserver.current() is not None, "the children were forked here after all"
-    forkserver.stop()
 
 
 def write(tmp_path: Path, text: str, name: str = "answer.py") -> Path:
@@ -264,26 +252,6 @@ def test_parent_is_still_healthy_after_hostile_runs(tmp_path):
     out = run_answer_file(write(tmp_path, "from lagrade.answer import *\nL = sin(t)\n"), ["L"])
     assert out.status == "ok" and decode_value(out.values["L"]) == sp.sin(t)
     assert os.getcwd() and sp.sympify("1 + 1") == 2
-
-
-def test_child_does_not_look_up_libc(tmp_path, monkeypatch):
-    """libc is loaded once in the parent: ``find_library`` runs ``ldconfig`` in a subprocess, which
-    every child (a fork of a large grader) would otherwise pay for, twice."""
-    import ctypes.util
-
-    sandbox._prepare_parent()
-    marker = tmp_path / "looked-up"
-
-    def find_library(name):
-        marker.write_text(name)  # in the child this runs before privileges are dropped
-        return None
-
-    monkeypatch.setattr(ctypes.util, "find_library", find_library)
-    if forkserver.current() is not None:
-        forkserver.start()  # a server started before the patch would not see it
-    out = run_answer_file(write(tmp_path, "L = 1\n"), ["L"], FAST)
-    assert out.status == "ok" and decode_value(out.values["L"]) == 1
-    assert not marker.exists()
 
 
 def test_the_child_sends_expressions_as_nodes_and_the_rest_as_srepr(tmp_path):

@@ -87,7 +87,7 @@ def test_class_of_232_submissions(tmp_path, sentinel):
 
 
 def test_a_grader_has_imported_what_sympy_loads_lazily_for_common_answers():
-    """Sandbox children are forked from the grader: what it has not imported, every answer that
+    """Sandbox children are forked from the zygote: what it has not imported, every answer that
     calls ``solve`` or ``euler_equations`` would import again (about 0.1 s each, measured), and
     every answer that differentiates a Matrix (30-45 ms)."""
     import subprocess
@@ -96,7 +96,7 @@ def test_a_grader_has_imported_what_sympy_loads_lazily_for_common_answers():
     # not loaded by `import sympy`: by `solve`, and by differentiating a Matrix
     lazy = ("sympy.physics.units", "sympy.combinatorics", "sympy.tensor.array.expressions")
     probe = ("import sys, sympy\nbefore = [m in sys.modules for m in {lazy!r}]\n"
-             "from lagrade.bulk.worker import _warm_sympy\n_warm_sympy()\n"
+             "from lagrade.answers.zygote import _warm_sympy\n_warm_sympy()\n"
              "print(not any(before) and all(m in sys.modules for m in {lazy!r}))").format(lazy=lazy)
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=120)
     assert out.stdout.strip() == "True", out.stderr

@@ -54,7 +54,6 @@ __all__ = ["AnswerProblem", "EncodedValue", "SandboxLimits", "SandboxOutcome", "
 
 STDOUT_KEEP = 2000
 _RESULT_FD = 3
-_NOBODY = 65534
 
 
 class SandboxLimits(BaseModel):
@@ -101,15 +100,12 @@ class RunningAnswer:
     Starting it and waiting are separate so that a one-off check can import the grading code while
     the child runs: two cores, two things at once."""
 
-    def __init__(self, outcome: SandboxOutcome | None = None, finish=None, workdir: str | None = None):
-        self._outcome, self._finish, self._workdir = outcome, finish, workdir
+    def __init__(self, outcome: SandboxOutcome | None = None, finish=None):
+        self._outcome, self._finish = outcome, finish
 
     def wait(self) -> SandboxOutcome:
         if self._outcome is None:
-            try:
-                self._outcome = self._finish()
-            finally:
-                shutil.rmtree(self._workdir, ignore_errors=True)
+            self._outcome = self._finish()
         return self._outcome
 
 
@@ -129,74 +125,60 @@ def start_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits =
         return fail("error", "the file is not valid UTF-8 text")
     except OSError as exc:
         return fail("error", f"cannot read the file: {exc.strerror or exc}")
-    problems = screen_source(source, name)
+    problems = screen_source(source, name) if TRIPWIRES else []
     if problems:
         syntax = any(p.message.startswith(("syntax error", "cannot parse")) for p in problems)
         return RunningAnswer(SandboxOutcome(status="error" if syntax else "rejected", problems=problems))
+    from lagrade.answers import zygote
 
-    _prepare_parent()
-    workdir = tempfile.mkdtemp(prefix="lagrade-answer-")
     try:
-        return RunningAnswer(finish=_start_forked(source, path, list(wanted), limits, workdir), workdir=workdir)
-    except BaseException:
-        shutil.rmtree(workdir, ignore_errors=True)
-        raise
+        return RunningAnswer(finish=_start_in_jail(zygote.current(), source, path, list(wanted), limits))
+    except zygote.ZygoteError as exc:
+        return fail("crashed", f"the sandbox could not run the answer ({exc}); please report it to your instructor")
 
 
-_prepared = False
+#: the Python-level screen, restricted builtins and audit hook: tripwires that give clear messages.
+#: Tests switch them off to show that the operating system's layers hold on their own.
+TRIPWIRES = True
 
 
-def _prepare_parent() -> None:
-    """Import, before forking, what the child may need but must not import once locked."""
-    global _prepared
-    if _prepared:
-        return
+def prepare_zygote() -> None:
+    """Import, in the zygote before it forks, what the child may need but must not import once locked."""
     import dataclasses  # noqa: F401  (sympy imports some modules lazily that use it)
     import sympy.parsing.sympy_parser  # noqa: F401  (patched in the child so strings are not parsed)
     import traceback  # noqa: F401
 
     # sympy imports these the first time an Add or Mul of a certain shape is built: about 50 ms that
-    # a child would pay on every answer (its imports die with it), and the parent again on rebuild
+    # a child would pay on every answer (its imports die with it)
     import sympy.assumptions.wrapper  # noqa: F401
     import sympy.sets.setexpr  # noqa: F401
     import sympy.tensor.tensor  # noqa: F401
 
-    try:
-        _libc()
-    except OSError:  # no libc to load: the child skips what needs it, as it did before
-        pass
-    _readable_dirs()
+    from lagrade.answers import jail
 
-    _prepared = True
+    for warm in (jail.landlock_available, jail.seccomp_available, _readable_dirs, secret_dirs):
+        warm()
 
 
-def _start_forked(source: str, path: Path, wanted: list[str], limits: SandboxLimits, workdir: str):
-    """Fork the child (through this process's fork server, if it has one: `lagrade.answers.forkserver`);
-    return the function that collects its outcome."""
-    from lagrade.answers import forkserver
-
+def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: SandboxLimits):
+    """Have the zygote fork the child; return the function that collects its outcome."""
     name = path.name
     token = secrets.token_hex(16)  # a report without it was not written by our child code
     result_r, result_w = os.pipe()
     out_r, out_w = os.pipe()
-    sys.stdout.flush()
-    sys.stderr.flush()
-    server, reap = forkserver.current(), _reap
-    pid = None
-    if server is not None:
-        try:
-            pid = server.spawn((source, str(path), name, wanted, limits, workdir, token), (result_w, out_w))
-            reap = server.reap
-        except (OSError, EOFError):
-            forkserver.stop()  # it is gone: fork here from now on
-    if pid is None:
-        pid = os.fork()
-        if pid == 0:  # child: never returns
-            _child_main(source, str(path), name, wanted, limits, workdir, result_w, out_w, token)
-    os.close(result_w)
-    os.close(out_w)
+    child = {"source": source, "path": str(path), "name": name, "wanted": wanted,
+             "limits": limits.model_dump(), "token": token, "tripwires": TRIPWIRES}
+    try:
+        pid = zyg.spawn(child, (result_w, out_w))
+    except BaseException:
+        for fd in (result_r, out_r):
+            os.close(fd)
+        raise
+    finally:
+        os.close(result_w)
+        os.close(out_w)
     started = time.monotonic()
-    return lambda: _collect(pid, name, wanted, limits, token, result_r, out_r, started, reap)
+    return lambda: _collect(pid, name, wanted, limits, token, result_r, out_r, started, zyg.reap)
 
 
 def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, token: str, result_r: int, out_r: int,
@@ -222,7 +204,7 @@ def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, toke
                         overflow = True
                 elif len(output) < 4 * STDOUT_KEEP:
                     output += chunk[: 4 * STDOUT_KEEP - len(output)]
-    exit_status, cpu_used = (reap or _reap)(pid, kill=timed_out or overflow, deadline=deadline + 2)
+    exit_status, cpu_used = (reap or reap_child)(pid, kill=timed_out or overflow, deadline=deadline + 2)
     os.close(result_r)
     os.close(out_r)
     stdout = output.decode("utf-8", "replace")[:STDOUT_KEEP]
@@ -253,7 +235,7 @@ def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, toke
     return SandboxOutcome(values=values, problems=problems, stdout=stdout, status=report.status)
 
 
-def _reap(pid: int, kill: bool, deadline: float) -> tuple[int, float]:
+def reap_child(pid: int, kill: bool, deadline: float) -> tuple[int, float]:
     """Wait for the child (killing its whole process group first if asked); return status and CPU."""
     if kill:
         _kill_group(pid)
@@ -282,25 +264,40 @@ class _CpuLimit(BaseException):
     """Raised in the child on SIGXCPU; a BaseException so library code does not swallow it."""
 
 
-def _child_main(source: str, code_path: str, name: str, wanted: list[str], limits: SandboxLimits,
-                workdir: str, result_w: int, out_w: int, token: str) -> None:
+#: the exit code of a child whose jail could not be built: it never ran the answer
+JAIL_FAILED = 72
+
+
+def child_main(child: dict[str, Any], workdir: str, result_w: int, out_w: int, *, layers: Sequence[str],
+               uid: int | None, readable: Sequence[str], vm_size: int) -> None:
+    """The forked child: confine itself (`lagrade.answers.jail`), then run the answer. Never returns.
+
+    If a layer the zygote reported active cannot be applied, the answer is not run at all."""
+    from lagrade.answers import jail
+
     code = 70
     try:
+        limits = SandboxLimits.model_validate(child["limits"])
         os.setsid()
         _setup_fds(result_w, out_w)
         os.chdir(workdir)
         os.environ.clear()
-        os.environ.update({"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8"})
+        os.environ.update({"PATH": "/nonexistent", "LANG": "C.UTF-8"})
         sys.stdout = sys.stderr = _CappedWriter(1, STDOUT_KEEP)
         sys.stdin = None
         sys.dont_write_bytecode = True
-        readable = _readable_dirs()
-        sys.path[:] = [p for p in sys.path if p and _under(os.path.realpath(p), readable)]
-        _unshare_network()
-        _set_limits(limits)
-        _drop_privileges(workdir, readable)
-        compiled = compile(source, code_path, "exec", dont_inherit=True)
-        report = _execute(compiled, code_path, name, wanted, limits, readable, token)
+        allowed = _readable_dirs()
+        sys.path[:] = [p for p in sys.path if p and _under(os.path.realpath(p), allowed)]
+        if "limits" in layers:
+            _set_limits(limits, vm_size)
+        failed = jail.confine(layers, uid, readable)
+        if failed:
+            code = JAIL_FAILED
+            os.write(2, f"the jail could not be built: {'; '.join(f'{k}: {v}' for k, v in failed.items())}\n".encode())
+            os._exit(code)
+        compiled = compile(child["source"], child["path"], "exec", dont_inherit=True)
+        report = _execute(compiled, child["path"], child["name"], list(child["wanted"]), limits, allowed,
+                          child["token"], bool(child.get("tripwires", True)))
         _write_all(_RESULT_FD, report)
         code = 0
     except BaseException as exc:  # noqa: BLE001 - reported as a crash by the parent
@@ -366,7 +363,8 @@ def _readable_dirs() -> tuple[str, ...]:
     return tuple(sorted({os.path.realpath(d) for d in dirs}))
 
 
-def _secret_dirs() -> tuple[str, ...]:
+@functools.cache
+def secret_dirs() -> tuple[str, ...]:
     """Reference solutions, problem files and the cache of reference derivations, wherever they are:
     never readable by an answer (a wheel puts them in site-packages, which is otherwise readable)."""
     from lagrade.cache import cache_dir
@@ -376,7 +374,6 @@ def _secret_dirs() -> tuple[str, ...]:
     return tuple(sorted({os.path.realpath(d) for d in (reference_dir(), *problem_dirs(), *cached)}))
 
 
-_SECRET_DIRS = _secret_dirs()
 
 
 def _try_import(module: str) -> types.ModuleType | None:
@@ -390,36 +387,10 @@ def _under(path: str, dirs: Sequence[str]) -> bool:
     return any(path == d or path.startswith(d.rstrip(os.sep) + os.sep) for d in dirs)
 
 
-@functools.cache
-def _libc() -> Any:
-    """libc, loaded once in the parent (``_prepare_parent``): ``find_library`` runs ``ldconfig -p``
-    in a subprocess, which a child forked from a large grader paid twice, ~4 ms per answer."""
-    import ctypes
-    import ctypes.util
-
-    return ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6", use_errno=True)
-
-
-#: True in a process that has an empty network namespace of its own already: a fork server makes one
-#: for all its children, which then need no namespace each (making one and, at the child's exit,
-#: the kernel tearing it down, cost 0.6-2 ms of CPU per answer here)
-_network_private = False
-
-
-def _unshare_network() -> None:
-    """A private, empty network namespace (needs CAP_SYS_ADMIN; silently skipped without it)."""
-    global _network_private
-    if _network_private:
-        return
-    try:
-        _network_private = _libc().unshare(0x40000000) == 0  # CLONE_NEWNET
-    except Exception:  # noqa: BLE001
-        pass
-
-
-def _set_limits(limits: SandboxLimits) -> None:
+def _set_limits(limits: SandboxLimits, vm: int) -> None:
+    """CPU, address space above the size the child was forked at, output files, descriptors, and no
+    new process."""
     cpu = max(1, math.ceil(limits.cpu_seconds))
-    vm = _vm_size()
     for which, value in (
         (resource.RLIMIT_CPU, (cpu, cpu + 1)),
         (resource.RLIMIT_AS, (vm + limits.memory_mb * 2**20,) * 2),
@@ -440,66 +411,9 @@ def _set_limits(limits: SandboxLimits) -> None:
     signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
 
 
-def _vm_size() -> int:
-    try:
-        with open("/proc/self/status") as fh:
-            for line in fh:
-                if line.startswith("VmSize:"):
-                    return int(line.split()[1]) * 1024
-    except OSError:
-        pass
-    return 0
-
-
 def _on_sigxcpu(signum: int, frame: Any) -> None:
     signal.signal(signal.SIGXCPU, signal.SIG_IGN)
     raise _CpuLimit()
-
-
-def _drop_privileges(workdir: str, readable: Sequence[str]) -> None:
-    """Become ``nobody`` if Python's files stay readable that way, else at least drop capabilities."""
-    try:
-        libc = _libc()
-        libc.prctl(38, 1, 0, 0, 0)  # PR_SET_NO_NEW_PRIVS
-        libc.prctl(1, signal.SIGKILL, 0, 0, 0)  # PR_SET_PDEATHSIG: die with the grader
-    except Exception:  # noqa: BLE001
-        libc = None
-    if os.geteuid() != 0:
-        return
-    if all(_world_traversable(d) for d in readable):
-        try:
-            os.chown(workdir, _NOBODY, _NOBODY)
-            os.setgroups([])
-            os.setgid(_NOBODY)
-            os.setuid(_NOBODY)
-            return
-        except OSError:
-            pass
-    if libc is not None:  # still uid 0, but without the powers of root
-        import ctypes
-
-        class Header(ctypes.Structure):
-            _fields_ = [("version", ctypes.c_uint32), ("pid", ctypes.c_int)]
-
-        class Data(ctypes.Structure):
-            _fields_ = [("effective", ctypes.c_uint32), ("permitted", ctypes.c_uint32),
-                        ("inheritable", ctypes.c_uint32)]
-
-        for cap in range(64):
-            libc.prctl(24, cap, 0, 0, 0)  # PR_CAPBSET_DROP
-        header = Header(0x20080522, 0)  # _LINUX_CAPABILITY_VERSION_3
-        libc.capset(ctypes.byref(header), ctypes.byref((Data * 2)()))
-
-
-def _world_traversable(path: str) -> bool:
-    p = Path(path)
-    for part in [p, *p.parents]:
-        try:
-            if not part.stat().st_mode & 0o001:
-                return False
-        except OSError:
-            return False
-    return True
 
 
 # --------------------------------------------------------------------------- audit hook
@@ -536,92 +450,111 @@ _ALLOWED_AUDITED_READS = frozenset({"__code__", "__defaults__", "__kwdefaults__"
 _PROTECTED_SETS = frozenset({"__code__", "__globals__", "__builtins__"})
 
 
-class _AuditPolicy:
-    """The child's audit hook: what sympy needs to work is allowed, the rest of the OS is not."""
+def _make_hook(student_code: types.CodeType, code_path: str, readable: Sequence[str], trusted_parse: frozenset,
+               trusted_reads: frozenset):
+    """The child's audit hook: a tripwire that names what an answer may not do, not the barrier.
 
-    def __init__(self, student_code: types.CodeType, code_path: str, readable: Sequence[str]) -> None:
-        self.student_code = student_code
-        self.protected_files = {code_path, os.path.realpath(__file__), __file__}
-        self.readable = tuple(readable)
-        self.trusted = False
-        self.busy = False
-        self.pending_exec = False
-        self.codegen = 0  # >0 while sympy parses one of its own strings
+    It keeps no state an answer could reach and switch: its re-entrancy flag and its "the next exec
+    is sympy's own generated code" flag live in this closure, and the hook function itself is held
+    only by the interpreter. Where lagrade's own code must do something audited (parse plain
+    arithmetic, find the answer's line in a traceback), the hook trusts the *frame* doing it, by its
+    code object, which an answer cannot forge. It touches no argument before checking that its type
+    is exactly ``str``, ``bytes`` or ``int``, so that no method of an answer's object runs inside it."""
+    protected = frozenset({code_path, os.path.realpath(__file__), __file__})
+    readable = tuple(readable)
+    busy = pending_exec = False
 
-    def __call__(self, event: str, args: tuple[Any, ...]) -> None:
-        if self.busy:
-            return
-        self.busy = True
-        try:
-            self.check(event, args)
-        finally:
-            self.busy = False
-
-    @staticmethod
     def deny(what: str) -> PermissionError:
         return PermissionError(f"{what} is not allowed in an answer file")
 
-    def check(self, event: str, args: tuple[Any, ...]) -> None:
-        if event == "open":
-            self.check_open(*args[:3])
-        elif event in ("os.listdir", "os.scandir"):
-            path = args[0] if args else "."
-            if isinstance(path, int) or not self.is_readable(path if path is not None else "."):
-                raise self.deny("listing directories")
-        elif event == "import":
-            module = str(args[0])
-            if not any(module == m or module.startswith(m + ".") for m in _SAFE_NEW_IMPORTS):
-                raise ImportError(f"import of '{module}' is not allowed in an answer file")
-        elif event == "compile" and self.trusted:
-            return
-        elif event == "compile":
-            source, filename = (args + (None, None))[:2]
-            self.pending_exec = False
-            if isinstance(source, str):
-                source = source.encode("utf-8", "replace")
-            if self.codegen or (filename == "<string>" and isinstance(source, bytes) and (
-                    source.startswith(_GENERATED_SOURCE_PREFIXES)
-                    or (_TYPE_HINT.fullmatch(source) and b"__" not in source))):
-                self.pending_exec = True
-            elif not (isinstance(filename, str) and filename.endswith(".py") and self.is_readable(filename)):
-                raise self.deny(f"compiling code (eval, exec, compile, sympify of strings, lambdify)")
-        elif event == "exec":
-            code = args[0]
-            filename = getattr(code, "co_filename", "")
-            if code is self.student_code or (filename.endswith(".py") and self.is_readable(filename)):
-                return
-            if self.codegen or (filename == "<string>" and self.pending_exec):
-                self.pending_exec = False
-                return
-            raise self.deny("running generated code")
-        elif event == "sys._getframe":
-            frame = args[0] if args else None
-            if frame is not None and frame.f_code.co_filename in self.protected_files:
-                raise self.deny("inspecting stack frames")
-        elif event == "object.__getattr__":
-            if not self.trusted and args[1] not in _ALLOWED_AUDITED_READS:
-                raise self.deny(f"reading '.{args[1]}'")
-        elif event in ("object.__setattr__", "object.__delattr__"):
-            if args[1] in _PROTECTED_SETS or isinstance(args[0], types.ModuleType):
-                raise self.deny(f"changing '.{args[1]}'")
-        elif event.startswith(_DENY_PREFIXES):
-            raise self.deny(f"'{event}'")
-
-    def check_open(self, path: Any, mode: Any = None, flags: Any = None) -> None:
-        writes = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_TRUNC | os.O_APPEND
-        if isinstance(mode, str) and any(c in mode for c in "wax+"):
-            raise self.deny("writing files")
-        if isinstance(flags, int) and flags & writes:
-            raise self.deny("writing files")
-        if isinstance(path, int) or not self.is_readable(path):
-            raise self.deny(f"opening '{os.fsdecode(path) if isinstance(path, (str, bytes)) else path}'")
-
-    def is_readable(self, path: Any) -> bool:
+    def is_readable(path: Any) -> bool:
+        if type(path) not in (str, bytes):
+            return False
         try:
             real = os.path.realpath(os.fsdecode(path))
         except (TypeError, ValueError, OSError):
             return False
-        return _under(real, self.readable) and not _under(real, _SECRET_DIRS)
+        return _under(real, readable) and not _under(real, secret_dirs())
+
+    def caller_is(codes: frozenset) -> bool:
+        frame = sys._getframe(3)  # 0 this, 1 check, 2 the hook, 3 the frame whose action raised the event
+        return frame is not None and frame.f_code in codes
+
+    def on_stack(codes: frozenset) -> bool:
+        frame = sys._getframe(3)
+        while frame is not None:
+            if frame.f_code in codes:
+                return True
+            frame = frame.f_back
+        return False
+
+    def check(event: str, args: tuple[Any, ...]) -> None:
+        nonlocal pending_exec
+        if event == "open":
+            path, mode, flags = (tuple(args) + (None, None, None))[:3]
+            if (type(mode) is str and any(c in mode for c in "wax+")) or (
+                    type(flags) is int and flags & (os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_TRUNC | os.O_APPEND)):
+                raise deny("writing files")
+            if not is_readable(path):
+                raise deny(f"opening '{path}'" if type(path) is str else "opening files")
+        elif event in ("os.listdir", "os.scandir"):
+            path = args[0] if args else "."
+            if not is_readable("." if path is None else path):
+                raise deny("listing directories")
+        elif event == "import":
+            module = args[0] if args else None
+            if type(module) is not str or not any(module == m or module.startswith(m + ".") for m in _SAFE_NEW_IMPORTS):
+                raise ImportError(f"import of '{module if type(module) is str else '?'}' is not allowed in an answer file")
+        elif event == "compile":
+            source, filename = (tuple(args) + (None, None))[:2]
+            pending_exec = False
+            if type(source) is str:
+                source = source.encode("utf-8", "replace")
+            if on_stack(trusted_parse) or (filename == "<string>" and type(source) is bytes and (
+                    source.startswith(_GENERATED_SOURCE_PREFIXES)
+                    or (_TYPE_HINT.fullmatch(source) and b"__" not in source))):
+                pending_exec = True
+            elif filename == "<unknown>" and type(source) is bytes:
+                pass  # ast.parse: a tree, not code; running anything compiled from it is refused below
+            elif not (type(filename) is str and filename.endswith(".py") and is_readable(filename)):
+                raise deny("compiling code (eval, exec, compile, sympify of strings, lambdify)")
+        elif event == "exec":
+            code = args[0] if args else None
+            if type(code) is not types.CodeType:
+                raise deny("running generated code")
+            filename = code.co_filename
+            if code is student_code or (type(filename) is str and filename.endswith(".py") and is_readable(filename)):
+                return
+            if filename == "<string>" and (pending_exec or on_stack(trusted_parse)):
+                pending_exec = False
+                return
+            raise deny("running generated code")
+        elif event == "sys._getframe":
+            frame = args[0] if args else None
+            if type(frame) is types.FrameType and frame.f_code.co_filename in protected and not caller_is(trusted_parse):
+                raise deny("inspecting stack frames")
+        elif event == "object.__getattr__":
+            name = args[1] if len(args) > 1 else None
+            if type(name) is not str or (name not in _ALLOWED_AUDITED_READS and not caller_is(trusted_reads | trusted_parse)):
+                raise deny(f"reading '.{name if type(name) is str else '?'}'")
+        elif event in ("object.__setattr__", "object.__delattr__"):
+            name = args[1] if len(args) > 1 else None
+            if type(name) is not str or name in _PROTECTED_SETS or types.ModuleType in type(args[0]).__mro__:
+                raise deny(f"changing '.{name if type(name) is str else '?'}'")
+        elif event.startswith(_DENY_PREFIXES):
+            raise deny(f"'{event}'")
+
+    def hook(event: str, args: tuple[Any, ...]) -> None:
+        nonlocal busy
+        if busy:
+            return
+        busy = True
+        try:
+            check(event, args)
+        finally:
+            busy = False
+
+    return hook
 
 
 # --------------------------------------------------------------------------- running and encoding
@@ -691,63 +624,66 @@ _PARSE_FORBIDDEN = frozenset({"plot", "plot3d", "textplot", "var", "symbols", "S
                               "Dummy", "Wild", "__import__", "print", "pprint", "type", "object"})
 
 
-def _guard_string_parsing(policy: _AuditPolicy, code_path: str) -> None:
+def _guard_string_parsing(code_path: str, readable: Sequence[str]) -> types.CodeType:
     """sympy parses strings internally (``nsimplify``, module imports), so parsing stays possible,
     but only for text that is plain arithmetic (no attributes, dunders, lambdas, blocked names)
     or that a sympy module passes while being imported.  ``eval`` is what parse_expr does, so
-    this is the gate that keeps ``S(text)`` from being a way around the screening."""
+    this is the gate that keeps ``S(text)`` from being a way around the screening. The hook trusts
+    the compile and exec this function's frame leads to (its code object); calling sympy's own
+    parse_expr directly is refused."""
     import sympy.parsing.sympy_parser as parser
 
     original = parser.parse_expr
 
     def parse_expr(*args: Any, **kwargs: Any) -> Any:
-        policy.trusted = True
-        try:
-            frame, from_import = sys._getframe(1), False
-            while frame is not None:
-                filename = frame.f_code.co_filename
-                if filename == code_path:
-                    break
-                if frame.f_code.co_name == "<module>" and policy.is_readable(filename):
-                    from_import = True
-                    break
-                frame = frame.f_back
-            plain = bool(args) and _plain_math(args[0])  # ast.parse raises a "compile" event
-        finally:
-            policy.trusted = False
+        frame, from_import = sys._getframe(1), False
+        while frame is not None:
+            filename = frame.f_code.co_filename
+            if filename == code_path:
+                break
+            if frame.f_code.co_name == "<module>" and type(filename) is str and _under(os.path.realpath(filename), readable):
+                from_import = True
+                break
+            frame = frame.f_back
+        frame = None
+        plain = bool(args) and _plain_math(args[0])
         if not from_import and not plain:
             raise PermissionError("parsing strings into expressions (sympify/S of a string) is not allowed "
                                   "in an answer file; build expressions with Symbol, Function and operators")
-        policy.codegen += 1
-        try:
-            return original(*args, **kwargs)
-        finally:
-            policy.codegen -= 1
+        return original(*args, **kwargs)
 
     parser.parse_expr = parse_expr
+    return parse_expr.__code__
+
+
+def _answer_line(tb: Any, code_path: str) -> int | None:
+    """The last line of the answer file in a traceback (reading ``tb_frame`` is audited: the hook
+    trusts this function's frame, which returns a number only)."""
+    line = None
+    while type(tb) is types.TracebackType:
+        if tb.tb_frame.f_code.co_filename == code_path:
+            line = tb.tb_lineno
+        tb = tb.tb_next
+    return line
+
+
+_TRUSTED_READS = frozenset({_answer_line.__code__})
 
 
 def _execute(code: types.CodeType, code_path: str, name: str, wanted: list[str],
-             limits: SandboxLimits, readable: Sequence[str], token: str) -> bytes:
-    import traceback
-
-    policy = _AuditPolicy(code, code_path, readable)
-    _guard_string_parsing(policy, code_path)
-    namespace: dict[str, Any] = {"__name__": "__answer__", "__builtins__": _restricted_builtins()}
+             limits: SandboxLimits, readable: Sequence[str], token: str, tripwires: bool = True) -> bytes:
+    builtins_ = _restricted_builtins() if tripwires else vars(builtins)
+    namespace: dict[str, Any] = {"__name__": "__answer__", "__builtins__": builtins_}
     status, problems = "ok", []
-    sys.addaudithook(policy)
+    if tripwires:
+        guard = _guard_string_parsing(code_path, readable)
+        sys.addaudithook(_make_hook(code, code_path, readable, frozenset({guard}), _TRUSTED_READS))
     try:
         exec(code, namespace)
     except BaseException as exc:  # noqa: BLE001 - every failure is reported to the student
         signal.signal(signal.SIGXCPU, signal.SIG_IGN)
-        policy.trusted = True
-        line = None
-        for frame, lineno in traceback.walk_tb(exc.__traceback__):
-            if frame.f_code.co_filename == code_path:
-                line = lineno
-        policy.trusted = False
         status, message = _describe(exc, limits)
-        problems.append({"file": name, "line": line, "message": message})
+        problems.append({"file": name, "line": _answer_line(exc.__traceback__, code_path), "message": message})
     signal.signal(signal.SIGXCPU, signal.SIG_IGN)
 
     values: dict[str, Any] = {}

@@ -43,12 +43,16 @@ class Grader:
     def __init__(self, problems: dict[str, str], directory: str | None = None) -> None:
         """``directory``: where the problems and each job's file go (made here if not given); the
         coordinator makes it, so that it can remove it when it has to kill this process."""
+        from lagrade.answers import zygote
         from lagrade.grade import references
         from lagrade.library import load_problem
         from lagrade.verdict_memo import VerdictMemo
 
-        self.memo = VerdictMemo()  # a class hands in the same values again and again
         self.dir = Path(directory) if directory else Path(tempfile.mkdtemp(prefix=_folder_prefix()))
+        # first, so that it warms up on the other core meanwhile: a fresh interpreter that never
+        # holds what this process is about to load (the problems, their references)
+        self.zygote = zygote.start(warm=True, directory=str(self.dir))
+        self.memo = VerdictMemo()  # a class hands in the same values again and again
         (self.dir / "problems").mkdir(mode=0o700, exist_ok=True)  # the folder itself is traversable
         self.problems = {}
         for pid, text in problems.items():
@@ -60,17 +64,14 @@ class Grader:
                 refs[system.key]
             self.problems[pid] = problem
             _warm_up(problem, self.memo)
-        _warm_sympy()
-        from lagrade.answers import forkserver
-
-        forkserver.start()  # the sandbox children are forked from this warmed state from now on
-
+        #: the jail's layers active for every answer this grader runs (recorded in the gradebook)
+        self.jail = ",".join(self.zygote.active) or "none"
 
     def close(self) -> None:
-        from lagrade.answers import forkserver
+        from lagrade.answers import zygote
         from lagrade.grade import keep_references
 
-        forkserver.stop()
+        zygote.stop()
         for problem in self.problems.values():
             keep_references(problem)  # the next run (or `lagrade check`) starts warm
         shutil.rmtree(self.dir, ignore_errors=True)
@@ -119,17 +120,17 @@ class Grader:
             "status": _status(reason) if reason else "ok",
             "reason": reason, "score": result.score, "max_score": result.max_score,
             "problems": result.problems, "parts": parts, "seconds": time.monotonic() - start,
+            "jail": self.jail,
         }
 
 
 def _warm_up(problem, memo=None) -> None:
     """Grade the problem's reference solution (trusted: it ships with lagrade) once before the class.
 
-    Running it in this process too fills sympy's caches with the expressions a correct answer
-    builds; every sandbox child is forked from here, so a student's answer then costs a few
-    milliseconds to run instead of 40 (sympy otherwise re-derives the assumptions of each new
-    expression in every child). Grading it compiles and integrates what the answers will share, and
-    gives the ``memo`` the reference's own verdicts (many answers share some of its values)."""
+    Running it in this process fills sympy's caches with the expressions a correct answer builds
+    (the children run in the zygote, which never sees it). Grading it compiles and integrates what
+    the answers will share, and gives the ``memo`` the reference's own verdicts (many answers share
+    some of its values)."""
     from lagrade.answers.load import load_answer
     from lagrade.grade import grade_values
     from lagrade.library import reference_dir
@@ -140,32 +141,6 @@ def _warm_up(problem, memo=None) -> None:
     try:
         exec(compile(answer.read_text(encoding="utf-8"), str(answer), "exec"), {"__name__": "__reference__"})  # noqa: S102
         grade_values(problem, load_answer(answer, problem), read_as=(), memo=memo)
-    except Exception:  # noqa: BLE001  (a warm-up that fails only costs speed)
-        pass
-
-
-def _warm_sympy() -> None:
-    """Run, once in this process, the sympy entry points this chapter's answers use most.
-
-    sympy imports much lazily on first use: ``solve`` alone brings in about 45 modules (units,
-    combinatorics, tensor arrays ...). Every sandbox child is forked from here, so what this process
-    has not imported, every answer that calls ``solve`` imports again: an answer that finds the
-    normal modes from det(K - w^2 M) = 0 ran in 0.60 s in its child without this, 0.49 s with it.
-    The first derivative of a Matrix (the matrix form M q'' + K q of small oscillations) imports
-    sympy's array expressions: 30-45 ms in every child that writes q.diff(t, 2) for a Matrix q."""
-    import sympy as sp
-    from sympy.calculus.euler import euler_equations
-
-    try:
-        w, a = sp.symbols("w a", positive=True)
-        t = sp.Symbol("t")
-        q = sp.Function("q")(t)
-        sp.solve(sp.Matrix([[a - w, 1], [1, 2 - w]]).det(), w)
-        euler_equations(q.diff(t) ** 2 / 2 - a * sp.cos(q), [q], t)
-        sp.simplify(sp.sin(w) ** 2 + sp.cos(w) ** 2 + w / (w + w**2))
-        sp.trigsimp(sp.sin(w) * sp.cos(w))
-        sp.Matrix([[a, w], [w, a]]).inv()
-        sp.Matrix([q, a * q]).diff(t, 2)
     except Exception:  # noqa: BLE001  (a warm-up that fails only costs speed)
         pass
 
@@ -206,11 +181,18 @@ def failed_result(job: dict[str, Any], parts: list[tuple[str, float]], status: s
     }
 
 
+def die_with_parent() -> None:
+    """Be killed when the coordinator ends (``PR_SET_PDEATHSIG``), or leave now if it already has."""
+    from lagrade.answers.jail import pdeathsig
+
+    pdeathsig()
+    if os.getppid() == 1:
+        os._exit(0)
+
+
 def serve(conn: Any, parent_death_signal: bool = True) -> None:
     """The grader process's loop: warm up from the first message, then grade until EOF."""
     if parent_death_signal:
-        from lagrade.answers.forkserver import die_with_parent
-
         die_with_parent()
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the coordinator's business
     try:

@@ -1,0 +1,162 @@
+"""The clean zygote (lagrade.answers.zygote): the process students' code is forked from never held
+the key, keeps none of the grader's descriptors, reaps what nobody asks about, dies with its
+grader, and leaves nothing behind."""
+
+from __future__ import annotations
+
+import os
+import re
+import secrets
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from lagrade.answers import zygote
+from lagrade.answers.rebuild import decode_value
+from lagrade.answers.sandbox import SandboxLimits, run_answer_file, start_answer_file
+
+pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
+
+FAST = SandboxLimits(cpu_seconds=2, wall_seconds=8, memory_mb=256)
+
+
+@pytest.fixture(autouse=True)
+def fresh():
+    zygote.stop()
+    yield
+    zygote.stop()
+
+
+def _answer(tmp_path: Path, text: str = "L = 41 + 1\n") -> Path:
+    path = tmp_path / "answer.py"
+    path.write_text(text)
+    return path
+
+
+def _descendants(pid: int) -> list[int]:
+    found, todo = [], [pid]
+    while todo:
+        p = todo.pop()
+        try:
+            kids = [int(k) for k in Path(f"/proc/{p}/task/{p}/children").read_text().split()]
+        except OSError:
+            continue
+        found += kids
+        todo += kids
+    return found
+
+
+def _memory_holds(pid: int, needle: bytes) -> bool:
+    """Whether ``needle`` is anywhere in the readable memory of process ``pid`` (needs root or ptrace)."""
+    with open(f"/proc/{pid}/maps") as maps, open(f"/proc/{pid}/mem", "rb", 0) as mem:
+        for line in maps:
+            m = re.match(r"([0-9a-f]+)-([0-9a-f]+) (\S+)", line)
+            start, end, perms = int(m[1], 16), int(m[2], 16), m[3]
+            if "r" not in perms or "[vvar]" in line or "[vsyscall]" in line:
+                continue
+            try:
+                mem.seek(start)
+                if needle in mem.read(end - start):
+                    return True
+            except (OSError, ValueError, OverflowError):
+                continue
+    return False
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="reading another process's memory needs root")
+def test_the_process_that_runs_answers_never_held_the_key(tmp_path):
+    """A grader that has loaded a problem, derived its references and graded the reference solution
+    holds them in memory; the zygote (and so every child) holds none of it. The control: the same
+    search finds the key in the grader itself (a child forked from it, as before, would hold it)."""
+    from lagrade.grade import check, references
+    from lagrade.library import load_problem, reference_dir
+
+    key = f"lagrade-reference-key-{secrets.token_hex(8)}".encode()
+    kept = [bytearray(key)]  # stands for every secret the grader holds, in a form the search can find
+    problem = load_problem("12.22")
+    references(problem)
+    check(problem, reference_dir() / "12.22" / "answer.py")
+    made = zygote.start()
+    running = start_answer_file(_answer(tmp_path, "L = 1\nwhile True:\n    pass\n"), ["L"], FAST)
+    time.sleep(0.3)
+    processes = [made.proc.pid, *_descendants(made.proc.pid)]
+    assert len(processes) >= 3, processes  # the zygote, its PID 1, the answer's child
+    assert _memory_holds(os.getpid(), key), "the control failed: the search cannot find the key"
+    secret_text = (reference_dir() / "12.22" / "answer.py").read_text().splitlines()[-1].encode()
+    for pid in processes:
+        assert not _memory_holds(pid, key), f"process {pid} holds the grader's key"
+        assert not _memory_holds(pid, secret_text), f"process {pid} holds the reference solution"
+    running.wait()
+    del kept
+
+
+def test_the_zygote_keeps_none_of_the_graders_descriptors(tmp_path):
+    r, w = os.pipe()
+    try:
+        made = zygote.start()
+        made.hello()
+        for pid in [made.proc.pid, *_descendants(made.proc.pid)]:
+            fds = os.listdir(f"/proc/{pid}/fd")
+            targets = {os.readlink(f"/proc/{pid}/fd/{fd}") for fd in fds if os.path.exists(f"/proc/{pid}/fd/{fd}")}
+            ours = os.readlink(f"/proc/self/fd/{w}")
+            assert ours not in targets
+            assert len(fds) <= 6, (pid, targets)  # stdio, its socket, /proc/self/status
+    finally:
+        os.close(r)
+        os.close(w)
+
+
+def test_children_nobody_asks_about_are_reaped(tmp_path):
+    made = zygote.start()
+    for _ in range(3):
+        start_answer_file(_answer(tmp_path), ["L"], FAST)  # never waited for
+    time.sleep(1)
+    out = run_answer_file(_answer(tmp_path), ["L"], FAST)  # a spawn reaps the finished ones
+    assert out.status == "ok" and decode_value(out.values["L"]) == 42
+    inner = _descendants(made.proc.pid)
+    states = [Path(f"/proc/{p}/stat").read_text().rsplit(")", 1)[1].split()[0] for p in inner
+              if os.path.exists(f"/proc/{p}/stat")]
+    assert "Z" not in states
+
+
+def test_the_zygote_dies_with_its_grader_and_leaves_nothing():
+    script = ("import sys\nfrom lagrade.answers import zygote\nz = zygote.start()\nz.hello()\n"
+              "print(z.proc.pid, z.staging, flush=True)\nsys.stdin.read()\n")
+    grader = subprocess.Popen([sys.executable, "-c", script], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    pid, staging = grader.stdout.readline().split()
+    pid = int(pid)
+    family = [pid, *_descendants(pid)]
+    grader.kill()
+    grader.wait()
+    deadline = time.monotonic() + 10
+    while any(os.path.exists(f"/proc/{p}") and "Z" not in Path(f"/proc/{p}/stat").read_text().rsplit(")", 1)[1][:3]
+              for p in family) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    alive = [p for p in family if os.path.exists(f"/proc/{p}")
+             and "Z" not in Path(f"/proc/{p}/stat").read_text().rsplit(")", 1)[1][:3]]
+    assert not alive
+    if staging != "-":
+        # killed with its grader, nobody could remove the (empty) mount point: it is all that is left
+        assert not any(Path(staging).iterdir())
+        os.rmdir(staging)
+
+
+def test_a_stopped_zygote_leaves_no_directory(tmp_path):
+    made = zygote.start()
+    run_answer_file(_answer(tmp_path), ["L"], FAST)
+    staging = made.staging
+    zygote.stop()
+    assert not made.alive()
+    assert not staging or not os.path.exists(staging)
+
+
+def test_a_dead_zygote_is_replaced(tmp_path):
+    made = zygote.start()
+    made.hello()
+    made.proc.kill()
+    made.proc.wait()
+    out = run_answer_file(_answer(tmp_path), ["L"], FAST)
+    assert out.status == "ok" and zygote.current() is not made
