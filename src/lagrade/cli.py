@@ -168,6 +168,10 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     """Grade ANSWER (answer.py or answer.toml) for PROBLEM_ID."""
     from lagrade.answers.load import start_loading
 
+    if answer.suffix == ".py":
+        from lagrade.answers import zygote
+
+        zygote.start()  # a fresh interpreter, started before the problem is read: it imports sympy meanwhile
     try:
         p = _problem(problem_id, problems_dir)
     except click.UsageError as exc:
@@ -260,8 +264,9 @@ def _register() -> None:
     from lagrade.cli_bench import bench
     from lagrade.cli_bulk import export, grade, gradescope, report
     from lagrade.cli_cache import cache
+    from lagrade.cli_doctor import doctor
 
-    for command in (grade, export, report, gradescope, bench, cache):
+    for command in (grade, export, report, gradescope, bench, cache, doctor):
         main.add_command(command)
 
 

@@ -39,9 +39,12 @@ def _assignment(path: Path, problems_dir: tuple[Path, ...]):
 @click.option("--regrade", is_flag=True, help="Grade every submission again, even unchanged ones.")
 @click.option("--progress/--no-progress", default=None, help="Progress bar (default: when stderr is a terminal).")
 @click.option("--summary/--no-summary", default=True, show_default=True, help="Print the class summary at the end.")
+@click.option("--unsafe-trusted-files", is_flag=True,
+              help="Grade even where the OS jail cannot be built (see `lagrade doctor`): only for files you trust.")
 @problems_option
 def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: int | None, scheduler: str | None,
-          regrade: bool, progress: bool | None, summary: bool, problems_dir: tuple[Path, ...]) -> None:
+          regrade: bool, progress: bool | None, summary: bool, unsafe_trusted_files: bool,
+          problems_dir: tuple[Path, ...]) -> None:
     """Grade a class folder SUBMISSIONS/<student>/<problem-id>.py (or .toml) into a database.
 
     Only new or changed files are graded when run again; every result is saved as soon as it is
@@ -55,6 +58,7 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
     a = _assignment(assignment_path, problems_dir)
     db = db or assignment_path.with_suffix(".sqlite")
     err = Console(stderr=True, highlight=False)
+    _require_jail(unsafe_trusted_files, err)  # on a Dask cluster, each file's row records its worker's layers
     show = err.is_terminal if progress is None else progress
     bar = _ProgressBar(err, show)
     try:
@@ -83,6 +87,25 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
         from lagrade.bulk.summary import render_summary
 
         render_summary(load_gradebook(db), out)
+
+
+def _require_jail(unsafe: bool, err) -> None:
+    """Refuse to run a class's files where the OS jail cannot be built, unless told they are trusted."""
+    from lagrade.answers import jail, zygote
+
+    try:
+        probe = zygote.Zygote()
+        try:
+            lacking = jail.missing_minimum(probe.hello()["active"])
+        finally:
+            probe.close()
+    except OSError as exc:
+        lacking = f"the sandbox could not start ({exc})"
+    if lacking and not unsafe:
+        raise click.ClickException(f"refusing to run students' files: {lacking} on this machine (`lagrade doctor` "
+                                   "says why); give --unsafe-trusted-files only if you trust every file")
+    if lacking:
+        err.print(f"warning: {lacking}; grading anyway (--unsafe-trusted-files); the gradebook records the layers")
 
 
 class _ProgressBar:
