@@ -17,6 +17,37 @@ problems_option = click.option("--problems", "problems_dir", multiple=True, type
                                help="Extra folder of problem files (also LAGRADE_PROBLEMS).")
 
 
+#: a gradebook path as click passes it on: what it is, and whether it can be read, is the Store's to
+#: say (one line naming the file and what to do, exit 2), not a click usage error
+GRADEBOOK_PATH = click.Path(path_type=Path, readable=False)
+
+
+class GradebookError(click.ClickException):
+    """``lagrade: <what is wrong with the gradebook>; <what to do>`` on one line of stderr, exit 2."""
+
+    exit_code = 2
+
+    def show(self, file=None) -> None:  # noqa: ARG002
+        click.echo(f"lagrade: {self.message}", err=True)
+
+
+def _gradebook_error(db: Path, exc: Exception, hint: str) -> GradebookError:
+    """The one-line error for a gradebook that cannot be used; SQLite's own errors get the file named."""
+    import sqlite3
+
+    from lagrade.bulk.store import NotAGradebook
+
+    if isinstance(exc, NotAGradebook):
+        what = str(exc)
+    elif isinstance(exc, sqlite3.DatabaseError):
+        what = f"{db} is not a lagrade gradebook ({exc})"
+    elif isinstance(exc, ValueError):
+        what = f"{db} is not a lagrade gradebook (its stored assignment cannot be read: {exc})"
+    else:  # another writer, another schema version, nothing graded yet: the message says what to do
+        return GradebookError(str(exc))
+    return GradebookError(f"{' '.join(what.split())}; {hint}")
+
+
 def _assignment(path: Path, problems_dir: tuple[Path, ...]):
     from lagrade.bulk.assignment import AssignmentError, check_against_problems, load_assignment
 
@@ -32,7 +63,7 @@ def _assignment(path: Path, problems_dir: tuple[Path, ...]):
 @click.argument("submissions", type=click.Path(exists=True, file_okay=False, path_type=Path))
 @click.option("--assignment", "-a", "assignment_path", required=True,
               type=click.Path(exists=True, dir_okay=False, path_type=Path), help="The assignment TOML file.")
-@click.option("--db", type=click.Path(dir_okay=False, path_type=Path),
+@click.option("--db", type=GRADEBOOK_PATH,
               help="The gradebook database (SQLite; default: <assignment>.sqlite next to the assignment).")
 @click.option("--workers", "-j", type=click.IntRange(min=1), help="Grader processes (default: all cores).")
 @click.option("--scheduler", help="Grade on an existing Dask cluster (tcp://host:8786; needs lagrade[dask]).")
@@ -50,6 +81,8 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
     Only new or changed files are graded when run again; every result is saved as soon as it is
     graded, so an interrupted run resumes where it stopped.
     """
+    import sqlite3
+
     from rich.console import Console
 
     from lagrade.bulk.runner import grade_folder
@@ -65,8 +98,8 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
         with bar:
             report = grade_folder(submissions, a, db, workers=workers, scheduler=scheduler, problems_dirs=problems_dir,
                                   on_start=bar.start, on_result=bar.advance, regrade=regrade)
-    except StoreError as exc:
-        raise click.ClickException(str(exc)) from None
+    except (StoreError, sqlite3.DatabaseError) as exc:
+        raise _gradebook_error(db, exc, "give another --db path or move it away") from None
     except KeyboardInterrupt:
         err.print("interrupted: every submission graded so far is saved; run the same command to go on")
         sys.exit(130)
@@ -106,6 +139,8 @@ def _require_jail(unsafe: bool, err) -> None:
                                    "says why); give --unsafe-trusted-files only if you trust every file")
     if lacking:
         err.print(f"warning: {lacking}; grading anyway (--unsafe-trusted-files); the gradebook records the layers")
+
+
 
 
 class _ProgressBar:
@@ -152,17 +187,21 @@ class _ProgressBar:
 
 
 def _book(db: Path):
+    """The gradebook at ``db``, or one line saying why it cannot be read (a damaged page, a mangled
+    stored assignment: whatever the file holds is not trusted)."""
+    import sqlite3
+
     from lagrade.bulk.gradebook import load_gradebook
     from lagrade.bulk.store import StoreError
 
     try:
         return load_gradebook(db)
-    except StoreError as exc:
-        raise click.ClickException(str(exc)) from None
+    except (StoreError, sqlite3.DatabaseError, ValueError) as exc:  # ValueError: its JSON, AssignmentError
+        raise _gradebook_error(db, exc, "give the database that 'lagrade grade' wrote") from None
 
 
 @click.command("export")
-@click.argument("db", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.argument("db", type=GRADEBOOK_PATH)
 @click.option("--format", "fmt", type=click.Choice(["canvas", "csv", "gradescope", "html", "skipped"]),
               default="canvas", show_default=True, help="What to write.")
 @click.option("--output", "-o", type=click.Path(path_type=Path),
@@ -200,7 +239,7 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
 
 
 @click.command("report")
-@click.argument("db", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.argument("db", type=GRADEBOOK_PATH)
 @click.option("--html", "html_dir", type=click.Path(file_okay=False, path_type=Path),
               help="Write the class report and one feedback page per student into this folder.")
 def report(db: Path, html_dir: Path | None) -> None:

@@ -6,6 +6,11 @@ rows on ``ID``/``SIS User ID``/``SIS Login ID``; without a roster the student fo
 ``SIS Login ID``. With ``--roster`` (a Canvas gradebook export) each folder name is looked up in
 the roster's ``SIS Login ID``, ``SIS User ID``, ``ID`` or ``Student`` column, and the roster's
 identifiers are used.
+
+Every text cell of every CSV export goes through :func:`spreadsheet_safe`: student folder names,
+roster ids, paths and reasons are chosen by students, and a spreadsheet runs a cell that begins
+with ``=`` as a formula. Numbers lagrade computed are written as numbers. Gradescope's
+``results.json`` is JSON read by Gradescope, never a spreadsheet: it is left as it is.
 """
 
 from __future__ import annotations
@@ -13,15 +18,43 @@ from __future__ import annotations
 import csv
 import io
 import json
+from collections.abc import Iterable
 from pathlib import Path
 
-from lagrade.bulk.gradebook import Gradebook, StudentGrade
+from lagrade.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
 
 CANVAS_ID_COLUMNS = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"]
+
+#: a cell beginning with one of these is a formula (or becomes one) in Excel, LibreOffice, Sheets
+FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
 
 
 def _fmt(x: float) -> str:
     return f"{round(x, 4):g}"
+
+
+def spreadsheet_safe(cell: str | float) -> str:
+    """A CSV cell that no spreadsheet runs as a formula (OWASP's CSV injection advice).
+
+    Text that begins like a formula gets a leading ``'``, so that it is read as text; a number (an
+    ``int`` or ``float`` lagrade computed, such as a score) is formatted, never prefixed."""
+    if isinstance(cell, (int, float)):
+        return _fmt(cell)
+    return "'" + cell if cell.startswith(FORMULA_STARTS) else cell
+
+
+def _csv(rows: Iterable[Iterable[str | float]]) -> str:
+    """The CSV text of ``rows``, every cell through :func:`spreadsheet_safe`: every export writes with it.
+
+    A row with a carriage return in a cell (a folder name can hold one) is quoted whole: with ``\n``
+    line ends, Python's writer leaves that cell bare, and a reader would end the row there."""
+    buf = io.StringIO()
+    plain = csv.writer(buf, lineterminator="\n")
+    quoted = csv.writer(buf, lineterminator="\n", quoting=csv.QUOTE_ALL)
+    for row in rows:
+        cells = [spreadsheet_safe(c) for c in row]
+        (quoted if any("\r" in c for c in cells) else plain).writerow(cells)
+    return buf.getvalue()
 
 
 def read_roster(path: Path) -> dict[str, dict[str, str]]:
@@ -37,28 +70,30 @@ def read_roster(path: Path) -> dict[str, dict[str, str]]:
 
 
 def canvas_csv(book: Gradebook, roster: dict[str, dict[str, str]] | None = None) -> str:
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
-    name = book.assignment.name
-    w.writerow(CANVAS_ID_COLUMNS + [name])
-    w.writerow(["Points Possible", "", "", "", "", _fmt(book.possible)])
+    rows = [CANVAS_ID_COLUMNS + [book.assignment.name], ["Points Possible", "", "", "", "", book.possible]]
     for s in book.students:
         r = (roster or {}).get(s.student)
-        ids = [r.get(c, "") for c in CANVAS_ID_COLUMNS] if r else [s.student, "", "", s.student, ""]
-        w.writerow(ids + [_fmt(s.points)])
-    return buf.getvalue()
+        ids = [r.get(c) or "" for c in CANVAS_ID_COLUMNS] if r else [s.student, "", "", s.student, ""]
+        rows.append(ids + [s.points])
+    return _csv(rows)
+
+
+def file_jail(g: ProblemGrade) -> str | None:
+    """The sandbox layers the file was graded under, as its grader reported them (None: not recorded)."""
+    return next((p["jail"] for p in g.parts if p.get("jail")), None)
 
 
 def plain_csv(book: Gradebook) -> str:
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
+    """One row per student; ``jail``: the sandbox layers of their files (each distinct one, ``; ``)."""
     pids = book.assignment.ids
-    w.writerow(["student", *pids, "total", "possible", *(f"{p} status" for p in pids)])
+    rows = [["student", *pids, "total", "possible", *(f"{p} status" for p in pids), "jail"]]
     for s in book.students:
         g = s.problems
-        w.writerow([s.student, *(_fmt(g[p].points) for p in pids), _fmt(s.points), _fmt(s.possible),
-                    *(g[p].outcome if g[p].outcome != "failed" else f"failed: {g[p].status}" for p in pids)])
-    return buf.getvalue()
+        jails = dict.fromkeys(j for p in pids if (j := file_jail(g[p])))
+        rows.append([s.student, *(g[p].points for p in pids), s.points, s.possible,
+                     *(g[p].outcome if g[p].outcome != "failed" else f"failed: {g[p].status}" for p in pids),
+                     "; ".join(jails)])
+    return _csv(rows)
 
 
 def gradescope_results(book: Gradebook, student: StudentGrade) -> dict:
@@ -100,11 +135,7 @@ def gradescope_json(book: Gradebook, student: str | None = None) -> str:
 
 
 def skipped_csv(book: Gradebook) -> str:
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["path", "reason"])
-    w.writerows(book.skipped)
-    return buf.getvalue()
+    return _csv([["path", "reason"], *book.skipped])
 
 
 FORMATS = ("canvas", "csv", "gradescope", "html", "skipped")

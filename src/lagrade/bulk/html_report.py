@@ -12,9 +12,11 @@ from __future__ import annotations
 import hashlib
 import re
 import shutil
+from collections import Counter
 from html import escape
 from pathlib import Path
 
+from lagrade.bulk.exports import file_jail
 from lagrade.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
 from lagrade.bulk.summary import common_mistakes, common_wrong_answers, failure_counts, problem_stats
 
@@ -113,6 +115,12 @@ def _math(text: str | None, mathml: str | None) -> str:
     return "<span class=\"muted\">—</span>"
 
 
+def jail_counts(book: Gradebook) -> Counter:
+    """Files per sandbox (``jail``) their grader reported. On the class page only: a student's page
+    goes to the student, and would tell them which layers were missing."""
+    return Counter(j for s in book.students for g in s.problems.values() if (j := file_jail(g)))
+
+
 def _index(book: Gradebook) -> str:
     a = book.assignment
     totals = [s.points for s in book.students]
@@ -152,6 +160,13 @@ def _index(book: Gradebook) -> str:
     if fails:
         out.append("<h2>Files that could not be graded</h2><ul>" +
                    "".join(f"<li>{escape(k)}: {v}</li>" for k, v in fails.most_common()) + "</ul>")
+    jails = jail_counts(book)
+    if jails:
+        out.append("<h2>Sandbox</h2><p class=\"muted\">The sandbox layers each file ran under, as its grader "
+                   "reported them.</p><table id=\"jails\"><thead><tr><th>layers</th><th class=\"num\">files</th>"
+                   "</tr></thead><tbody>" +
+                   "".join(f"<tr data-jail=\"{escape(j)}\"><td><code>{escape(j)}</code></td>"
+                           f"<td class=\"num\">{c}</td></tr>" for j, c in jails.most_common()) + "</tbody></table>")
     out.append("<h2>Students</h2><table id=\"students-table\" class=\"sortable\"><thead><tr><th>student</th>" +
                "".join(f"<th class=\"num\">{escape(p)}</th>" for p in a.ids) +
                "<th class=\"num\">total</th></tr></thead><tbody>")

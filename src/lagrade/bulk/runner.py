@@ -38,7 +38,7 @@ def grader_version() -> str:
 @dataclass
 class RunReport:
     total: int = 0          # submissions found
-    todo: int = 0           # graded in this run
+    todo: int = 0           # graded in this run (new, changed, or a grader failure graded once more)
     up_to_date: int = 0     # already in the database with the same keys
     removed: int = 0        # results dropped because their file is gone
     failed: int = 0         # graded in this run with outcome 'failed'
@@ -110,8 +110,9 @@ def grade_folder(root: Path, assignment: Assignment, db: Path, *, workers: int |
         store.set_meta("grader_version", p.version)
         present = {(s.student, s.problem) for s in p.layout.submissions}
         report.removed = store.sync_layout(p.layout.students, [(s.path, s.reason) for s in p.layout.skipped], present)
-        stored = store.keys()
-        todo = [s for s in p.layout.submissions if regrade or stored.get((s.student, s.problem)) != p.key(s)]
+        stored, retries = store.keys(), store.retries()
+        todo = [s for s in p.layout.submissions
+                if regrade or stored.get((s.student, s.problem)) != p.key(s) or (s.student, s.problem) in retries]
         report.todo, report.up_to_date = len(todo), report.total - len(todo)
         by_key = {(s.student, s.problem): s for s in todo}
         if regrade:  # forget the stored keys so that record() writes again
@@ -124,7 +125,7 @@ def grade_folder(root: Path, assignment: Assignment, db: Path, *, workers: int |
                          key=p.key(sub), outcome=result["outcome"], status=result["status"], reason=result["reason"],
                          score=result["score"], max_score=result["max_score"], problems=result["problems"],
                          stdout=result.get("stdout", ""), source=sub.data.decode("utf-8", "replace"),
-                         seconds=result["seconds"], parts=result["parts"])
+                         seconds=result["seconds"], parts=result["parts"], jail=result.get("jail"))
             if result["outcome"] == "failed":
                 report.failed += 1
             if on_result:

@@ -7,7 +7,13 @@ one transaction when its submission finishes, together with a line in ``grade_lo
 is graded again only when one of those three keys changed. Killing the run at any moment loses at
 most the submissions in flight (their transactions never committed) and doubles none.
 
-Only the coordinating process writes; workers send their results to it.
+A submission whose grader failed (``grader-crash``, ``grader-timeout``: lagrade's fault, not the
+file's) is graded once more by the next run; ``attempts`` counts the gradings of one key, so that
+a file that kills its grader every time is not retried forever.
+
+Only the coordinating process writes; workers send their results to it. A path that is not a
+gradebook (a folder, another file, another program's database, a damaged one) is refused with
+:class:`NotAGradebook` before anything is written to it.
 """
 
 from __future__ import annotations
@@ -16,11 +22,17 @@ import fcntl
 import json
 import os
 import sqlite3
+import stat
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 1  # columns added since are added to older gradebooks on opening (COLUMNS_ADDED)
+
+#: statuses that are the grader's failure, not the file's: graded again by the next run
+RETRIED_STATUSES = ("grader-crash", "grader-timeout")
+#: gradings of one key (file, grading, grader version) after which a grader failure stays
+MAX_ATTEMPTS = 2
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS meta (
@@ -47,6 +59,8 @@ CREATE TABLE IF NOT EXISTS submissions (
     source         TEXT NOT NULL DEFAULT '',    -- the file as graded (for the feedback pages)
     seconds        REAL NOT NULL,
     graded_at      TEXT NOT NULL,
+    attempts       INTEGER NOT NULL DEFAULT 1,  -- gradings of this key (a grader failure is retried)
+    jail           TEXT,                   -- the sandbox layers the file ran under, as the grader said
     PRIMARY KEY (student, problem)
 );
 CREATE TABLE IF NOT EXISTS parts (
@@ -81,8 +95,21 @@ CREATE TABLE IF NOT EXISTS grade_log (   -- append-only: one line per committed 
 """
 
 
+#: (table, column, definition) added after SCHEMA_VERSION 1: ALTER TABLE ... ADD COLUMN when missing
+COLUMNS_ADDED = [
+    ("submissions", "attempts", "INTEGER NOT NULL DEFAULT 1"),
+    ("submissions", "jail", "TEXT"),
+]
+TABLES = {"meta", "students", "submissions", "parts", "skipped", "grade_log", "sqlite_sequence"}
+SQLITE_MAGIC = b"SQLite format 3\x00"
+
+
 class StoreError(RuntimeError):
     pass
+
+
+class NotAGradebook(StoreError):
+    """The path cannot be used as a gradebook (the message names it and says why); it was left as it was."""
 
 
 @dataclass(frozen=True)
@@ -101,18 +128,43 @@ class Store:
 
     def __init__(self, path: Path | str, *, lock: bool = False, create: bool = True) -> None:
         self.path = Path(path)
-        if not create and not self.path.is_file():
-            raise StoreError(f"{self.path}: no such gradebook database")
+        _check_file(self.path, create)
         self._lock_fd = None
+        self.db = None
         if lock:
-            self._lock_fd = os.open(str(self.path) + ".lock", os.O_RDWR | os.O_CREAT, 0o644)
+            try:
+                self._lock_fd = os.open(str(self.path) + ".lock", os.O_RDWR | os.O_CREAT, 0o644)
+            except OSError as exc:
+                raise NotAGradebook(f"{self.path}.lock cannot be made ({exc.strerror})") from None
             try:
                 fcntl.flock(self._lock_fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
             except BlockingIOError:
                 os.close(self._lock_fd)
                 raise StoreError(f"{self.path}: another 'lagrade grade' is writing to this database") from None
+        try:
+            self._open(create, check=lock)
+        except sqlite3.DatabaseError as exc:
+            self.close()
+            what = "cannot be opened" if isinstance(exc, sqlite3.OperationalError) else "is not a lagrade gradebook"
+            raise NotAGradebook(f"{self.path} {what} ({exc})") from None
+        except StoreError:
+            self.close()
+            raise
+
+    def _open(self, create: bool, check: bool) -> None:
+        """Connect, refuse another program's database, then (``create``) make or migrate the schema.
+
+        ``check``: a grading run first reads every page (``PRAGMA quick_check``, milliseconds per
+        megabyte), so that it never writes into a damaged file; readers fail on the page they read."""
         self.db = sqlite3.connect(self.path, isolation_level=None, timeout=30)
         self.db.row_factory = sqlite3.Row
+        tables = {r[0] for r in self.db.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
+        if tables - TABLES and not ("meta" in tables and self.meta("schema_version") is not None):
+            raise NotAGradebook(f"{self.path} is not a lagrade gradebook (an SQLite database of something else)")
+        if check:
+            bad = [r[0] for r in self.db.execute("PRAGMA quick_check(3)")]
+            if bad != ["ok"]:
+                raise NotAGradebook(f"{self.path} is not a lagrade gradebook (damaged: {'; '.join(bad)})")
         self.db.execute("PRAGMA journal_mode=WAL")
         self.db.execute("PRAGMA synchronous=FULL")
         self.db.execute("PRAGMA foreign_keys=ON")
@@ -123,9 +175,18 @@ class Store:
                 self.set_meta("schema_version", str(SCHEMA_VERSION))
             elif int(version) != SCHEMA_VERSION:
                 raise StoreError(f"{self.path}: schema version {version}, this lagrade writes {SCHEMA_VERSION}")
+            self._migrate()
+
+    def _migrate(self) -> None:
+        """Add the columns that gradebooks written by an older lagrade lack (their rows get the default)."""
+        for table, column, definition in COLUMNS_ADDED:
+            if column not in self._columns(table):
+                self.db.execute(f"ALTER TABLE {table} ADD COLUMN {column} {definition}")
 
     def close(self) -> None:
-        self.db.close()
+        if self.db is not None:
+            self.db.close()
+            self.db = None
         if self._lock_fd is not None:
             os.close(self._lock_fd)
             self._lock_fd = None
@@ -152,6 +213,13 @@ class Store:
         rows = self.db.execute("SELECT student, problem, file_hash, grading_hash, grader_version FROM submissions")
         return {(r[0], r[1]): Key(r[2], r[3], r[4]) for r in rows}
 
+    def retries(self) -> set[tuple[str, str]]:
+        """(student, problem) of stored grader failures to grade once more although their key is unchanged."""
+        rows = self.db.execute(f"SELECT student, problem FROM submissions WHERE status IN "
+                               f"({', '.join('?' * len(RETRIED_STATUSES))}) AND attempts < ?",
+                               (*RETRIED_STATUSES, MAX_ATTEMPTS))
+        return {(r[0], r[1]) for r in rows}
+
     def sync_layout(self, students: list[str], skipped: list[tuple[str, str]],
                     present: set[tuple[str, str]]) -> int:
         """Record the roster and the skipped files; drop results whose file is gone. Returns how many."""
@@ -169,21 +237,25 @@ class Store:
 
     def record(self, *, student: str, problem: str, path: str, key: Key, outcome: str, status: str,
                reason: str, score: float, max_score: float, problems: list[str], stdout: str, source: str,
-               seconds: float, parts: list[dict]) -> bool:
-        """Write one graded submission in its own transaction. False if that exact grade is already stored."""
+               seconds: float, parts: list[dict], jail: str | None = None) -> bool:
+        """Write one graded submission in its own transaction. False if that exact grade is already stored
+        (a stored grader failure with attempts left is replaced, and its attempts counted)."""
         with self.transaction():
-            row = self.db.execute("SELECT file_hash, grading_hash, grader_version FROM submissions "
+            row = self.db.execute("SELECT file_hash, grading_hash, grader_version, status, attempts FROM submissions "
                                   "WHERE student = ? AND problem = ?", (student, problem)).fetchone()
-            if row is not None and Key(*row) == key:
-                return False
+            attempts = 1
+            if row is not None and Key(*row[:3]) == key:
+                if row["status"] not in RETRIED_STATUSES or row["attempts"] >= MAX_ATTEMPTS:
+                    return False
+                attempts = row["attempts"] + 1
             now = _now()
             self.db.execute("DELETE FROM submissions WHERE student = ? AND problem = ?", (student, problem))
             self.db.execute(
                 "INSERT INTO submissions(student, problem, path, file_hash, grading_hash, grader_version, outcome, "
-                "status, reason, score, max_score, problems, stdout, source, seconds, graded_at) "
-                "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                "status, reason, score, max_score, problems, stdout, source, seconds, graded_at, attempts, jail) "
+                "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                 (student, problem, path, key.file_hash, key.grading_hash, key.grader_version, outcome, status,
-                 reason, score, max_score, json.dumps(problems), stdout, source, seconds, now))
+                 reason, score, max_score, json.dumps(problems), stdout, source, seconds, now, attempts, jail))
             self.db.executemany(
                 "INSERT INTO parts(student, problem, part, verdict, score, max_score, method, feedback, answer_text, "
                 "answer_mathml, file_hash, grader_version) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
@@ -203,10 +275,44 @@ class Store:
         return self.db.execute("SELECT * FROM submissions ORDER BY student, problem").fetchall()
 
     def parts(self) -> list[sqlite3.Row]:
-        return self.db.execute("SELECT * FROM parts ORDER BY student, problem, rowid").fetchall()
+        """Every part, with the ``jail`` its file was graded in (the gradebook's readers see parts only).
+
+        A reader does not migrate: a gradebook from before the column has no jail to show."""
+        jail = "submissions.jail" if "jail" in self._columns("submissions") else "NULL"
+        return self.db.execute(f"SELECT parts.*, {jail} AS jail FROM parts JOIN submissions "
+                               "USING (student, problem) ORDER BY student, problem, parts.rowid").fetchall()
+
+    def _columns(self, table: str) -> set[str]:
+        return {r[1] for r in self.db.execute(f"PRAGMA table_info({table})")}
 
     def skipped(self) -> list[sqlite3.Row]:
         return self.db.execute("SELECT * FROM skipped ORDER BY path").fetchall()
+
+
+def _check_file(path: Path, create: bool) -> None:
+    """Refuse, before SQLite opens it, a path that cannot be a gradebook: a folder, a device or a
+    FIFO (opening one can block), a file this user cannot read, a file that does not begin as every
+    SQLite database does (an empty file is a new one). SQLite's own errors name neither the file
+    nor what to do."""
+    try:
+        st = path.stat()
+    except FileNotFoundError:
+        if create:
+            return
+        raise NotAGradebook(f"{path} does not exist") from None
+    except OSError as exc:
+        raise NotAGradebook(f"{path} cannot be opened ({exc.strerror})") from None
+    if stat.S_ISDIR(st.st_mode):
+        raise NotAGradebook(f"{path} is not a lagrade gradebook (it is a folder)")
+    if not stat.S_ISREG(st.st_mode):
+        raise NotAGradebook(f"{path} is not a lagrade gradebook (not a regular file)")
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(len(SQLITE_MAGIC))
+    except OSError as exc:
+        raise NotAGradebook(f"{path} cannot be read ({exc.strerror})") from None
+    if head and head != SQLITE_MAGIC:
+        raise NotAGradebook(f"{path} is not a lagrade gradebook (file is not a database)")
 
 
 class _Transaction:
