@@ -293,14 +293,19 @@ def _landlock(readable: Sequence[str], whole_stdlib: bool = False) -> str | None
     import landlock
 
     read = landlock.FSAccess.READ_FILE | landlock.FSAccess.READ_DIR
+    # the binding judges a call by errno, not by its result: a stale errno from an earlier failed
+    # call (a capability that does not exist, a path that is gone) would fail a call that worked
     try:
+        ctypes.set_errno(0)
         ruleset = landlock.Ruleset()
         for path in readable:
             for entry in ((path,) if whole_stdlib else _landlock_entries(path)):
                 try:
+                    ctypes.set_errno(0)
                     ruleset.allow(entry, rules=read if os.path.isdir(entry) else landlock.FSAccess.READ_FILE)
                 except OSError:
                     pass
+        ctypes.set_errno(0)
         ruleset.apply()
         os.close(ruleset._fd)  # the rules are ours now; the descriptor is not needed
     except Exception as exc:  # noqa: BLE001

@@ -229,6 +229,9 @@ def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, toke
             raise ValueError("forged report")
     except (ValueError, RecursionError, ValidationError, UnicodeDecodeError):
         code = os.WEXITSTATUS(exit_status) if os.WIFEXITED(exit_status) else -1
+        if code == JAIL_FAILED:  # the child's own words, before it ran anything of the answer's
+            why = stdout.strip().splitlines()[0][:300] if stdout.strip() else "the jail could not be built"
+            return outcome("crashed", f"the answer was not run: {why}; please report it to your instructor")
         return outcome("crashed", f"the answer could not be run (the sandbox stopped with code {code} and no result)")
     values = {k: v for k, v in report.values.items() if k in wanted}
     problems = [p.model_copy(update={"file": name}) for p in report.problems[:50]]

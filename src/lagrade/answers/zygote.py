@@ -212,6 +212,7 @@ def _main(argv: list[str]) -> None:
     allowed, hidden = jail.jail_dirs()
     status_fd = _open_status()
     inactive.update(jail.enter_namespaces(wanted & {"mount", "pid", "network", "uid"}))
+    jail._in_user_namespace()  # read (and kept) while /proc is still there: the jail has none
     if "uid" in wanted and "uid" not in inactive and os.geteuid() != 0 and not jail._in_user_namespace():
         inactive["uid"] = "not root and no user namespace"
     if "pid" in wanted and "pid" not in inactive:
