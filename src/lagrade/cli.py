@@ -162,9 +162,12 @@ def template(problem_id: str, problems_dir: tuple[Path, ...]) -> None:
               help="TOML file with a [credit] table changing the partial-credit defaults.")
 @click.option("--plot", "plot_file", type=click.Path(path_type=Path),
               help="PNG with your motion against the true one for each incorrect dynamics part.")
+@click.option("--grading-seconds", type=click.FloatRange(min=0, min_open=True), default=None,
+              help="CPU seconds to grade the values once the file has run (default: bulk grading's grading_seconds).")
 @problems_option
 def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tuple[str, ...], hints: bool,
-          credit_file: Path | None, plot_file: Path | None, problems_dir: tuple[Path, ...]) -> None:
+          credit_file: Path | None, plot_file: Path | None, grading_seconds: float | None,
+          problems_dir: tuple[Path, ...]) -> None:
     """Grade ANSWER (answer.py or answer.toml) for PROBLEM_ID."""
     from lagrade.answers.load import start_loading
 
@@ -190,8 +193,9 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     finish_loading = start_loading(answer, p)  # an answer.py runs in its sandbox child from here on
     # meanwhile (two cores, two things): the grader's imports, and the reference derivations (from
     # the disk cache, or derived now)
-    from lagrade.grade import grade_values, references
+    from lagrade.grade import default_grading_seconds, grade_values, references
 
+    grading_seconds = grading_seconds or default_grading_seconds()  # bounded like bulk grading
     refs = references(p)
     for system in p.systems:
         refs[system.key]
@@ -202,7 +206,8 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
         import rich.console  # noqa: F401
     loaded = finish_loading()
     result = grade_values(p, loaded, accuracy, list(only) or None, hints=hints, credit=credit,
-                          read_as=("latex",) if as_json else ("unicode",))
+                          read_as=("latex",) if as_json else ("unicode",),
+                          grading_seconds=grading_seconds)
     if plot_file is not None:
         from lagrade.plot import plot_result
 

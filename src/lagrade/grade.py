@@ -7,7 +7,12 @@ engine on one part is reported on that part (as a grader error) instead of crash
 
 from __future__ import annotations
 
+import math
 import os
+import signal
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 from lagrade.answers.load import LoadedAnswer, load_answer
@@ -48,6 +53,57 @@ def _unusable(part, verdict: str, feedback: str) -> PartResult:
                       feedback=feedback)
 
 
+class GradingOutOfTime(BaseException):
+    """Raised by SIGPROF when grading one answer runs out of CPU time; a BaseException so that the
+    engine's per-part guards (``except Exception``) do not swallow it."""
+
+
+def default_grading_seconds() -> float:
+    """Bulk grading's default bound (``[limits] grading_seconds``), so a check is bounded alike."""
+    from lagrade.bulk.assignment import Limits
+
+    return Limits.model_fields["grading_seconds"].default
+
+
+def out_of_time(seconds: float) -> str:
+    return (f"grading this answer took longer than {seconds:g} s of CPU time "
+            f"(the expressions are too large to compare)")
+
+
+@contextmanager
+def cpu_time_bound(seconds: float | None) -> Iterator[None]:
+    """Raise :class:`GradingOutOfTime` once the enclosed code has used ``seconds`` of this process's
+    CPU time (``ITIMER_PROF``: the engine's own proofs use ``ITIMER_REAL``, and time spent waiting on
+    the sandbox child is not the grader's work). Signals reach only the main thread, so elsewhere,
+    and for ``None`` or ``math.inf``, nothing is bounded. A timer armed before (a profiler's) is
+    paused meanwhile and resumed after."""
+    if seconds is not None and not seconds > 0:  # setitimer(0) would mean no bound at all
+        raise ValueError(f"grading_seconds must be positive, not {seconds!r}")
+    if (seconds is None or math.isinf(seconds) or not hasattr(signal, "setitimer")
+            or threading.current_thread() is not threading.main_thread()):
+        yield
+        return
+
+    def _expired(signum, frame):  # noqa: ARG001
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        raise GradingOutOfTime(out_of_time(seconds))
+
+    alarm = signal.getsignal(signal.SIGALRM)
+    previous = signal.signal(signal.SIGPROF, _expired)
+    outer = signal.setitimer(signal.ITIMER_PROF, seconds)  # a profiler's, say: paused meanwhile
+    try:
+        yield
+    except GradingOutOfTime:
+        if signal.getsignal(signal.SIGALRM) is not alarm:  # cut off inside the engine's own time bound,
+            signal.setitimer(signal.ITIMER_REAL, 0)        # before it could disarm its alarm
+            signal.signal(signal.SIGALRM, alarm)
+        raise
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, previous)
+        signal.setitimer(signal.ITIMER_PROF, *outer)
+
+
 def _check(ctx: Context, part, value) -> tuple[PartResult, bool]:
     """The part's grade, and whether it is the value's own (not an error of the engine's)."""
     try:
@@ -65,44 +121,62 @@ def _check(ctx: Context, part, value) -> tuple[PartResult, bool]:
 
 def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "default",
                  only: list[str] | None = None, hints: bool = False, credit: Credit | None = None,
-                 read_as: tuple[str, ...] = ("latex", "unicode"), memo: VerdictMemo | None = None) -> CheckResult:
+                 read_as: tuple[str, ...] = ("latex", "unicode"), memo: VerdictMemo | None = None,
+                 grading_seconds: float | None = None) -> CheckResult:
     """Grade every part; ``read_as`` says which echoes of the answer to render (pretty-printing a
     long expression can cost a tenth of a second, so a caller asks only for what it shows). A process
-    that grades many answers passes a ``memo``: a value graded before gets the verdict it got."""
+    that grades many answers passes a ``memo``: a value graded before gets the verdict it got.
+
+    ``grading_seconds`` bounds the CPU time of the whole grading (:func:`cpu_time_bound`): a part
+    not graded by then is ``invalid`` with the reason, so a huge expression gets a verdict, not a
+    hang. None leaves any bound to the caller (the bulk grader sets its own around loading too)."""
     ctx = Context(problem, references(problem), ACCURACY[accuracy], hints=hints, credit=credit or Credit())
-    parts = []
-    for part in problem.parts:
-        if only and part.name not in only:
-            continue
-        if part.name in answer.part_problems:
-            parts.append(_unusable(part, "invalid", str(answer.part_problems[part.name])))
-            continue
-        if part.name not in answer.values:
-            if answer.fatal is not None:
-                parts.append(_unusable(part, "invalid", f"not graded: {answer.fatal}"))
-            else:
-                parts.append(_unusable(part, "missing", f"no value bound to '{part.name}'"))
-            continue
-        value = answer.values[part.name]
-        key = memo.key(ctx, part, value) if memo is not None else None
-        graded_part = memo.get(key) if key is not None else None
-        if graded_part is None:
-            graded_part, own = _check(ctx, part, value)
-            if key is not None and own:
-                memo.put(key, graded_part)
-        if "latex" in read_as:
-            graded_part.read_as = as_latex(value)
-        if "unicode" in read_as:
-            graded_part.read_as_text = as_unicode(value)
-        parts.append(graded_part)
+    asked = [part for part in problem.parts if not only or part.name in only]
+    parts: list[PartResult] = []
+    try:
+        with cpu_time_bound(grading_seconds):
+            for part in asked:
+                parts.append(_ungradable(part, answer) or _grade_part(ctx, part, answer.values[part.name],
+                                                                      read_as, memo))
+    except GradingOutOfTime as exc:
+        parts += [_ungradable(part, answer) or _unusable(part, "invalid", str(exc)) for part in asked[len(parts):]]
     return CheckResult(problem=problem.id, score=round(sum(p.score for p in parts), 6),
                        max_score=sum(p.max_score for p in parts), parts=parts,
                        problems=[str(p) for p in answer.problems])
 
 
+def _ungradable(part, answer: LoadedAnswer) -> PartResult | None:
+    """The verdict of a part with no usable value (nothing to compare, so nothing to bound)."""
+    if part.name in answer.part_problems:
+        return _unusable(part, "invalid", str(answer.part_problems[part.name]))
+    if part.name not in answer.values:
+        if answer.fatal is not None:
+            return _unusable(part, "invalid", f"not graded: {answer.fatal}")
+        return _unusable(part, "missing", f"no value bound to '{part.name}'")
+    return None
+
+
+def _grade_part(ctx: Context, part, value, read_as: tuple[str, ...], memo: VerdictMemo | None) -> PartResult:
+    key = memo.key(ctx, part, value) if memo is not None else None
+    graded_part = memo.get(key) if key is not None else None
+    if graded_part is None:
+        graded_part, own = _check(ctx, part, value)
+        if key is not None and own:
+            memo.put(key, graded_part)
+    if "latex" in read_as:
+        graded_part.read_as = as_latex(value)
+    if "unicode" in read_as:
+        graded_part.read_as_text = as_unicode(value)
+    return graded_part
+
+
 def check(problem: str | Problem, answer: str | Path | None = None, *, accuracy: str = "default",
-          limits=None, hints: bool = False, credit: Credit | None = None, **parts: object) -> CheckResult:
-    """Grade an answer file, or parts given directly as sympy objects (``check("12.43", H=...)``)."""
+          limits=None, hints: bool = False, credit: Credit | None = None, grading_seconds: float | None = None,
+          **parts: object) -> CheckResult:
+    """Grade an answer file, or parts given directly as sympy objects (``check("12.43", H=...)``).
+
+    Grading is bounded like bulk grading's: ``grading_seconds`` of CPU time (default
+    :func:`default_grading_seconds`, ``math.inf`` for none; only on the main thread)."""
     prob = problem if isinstance(problem, Problem) else load_problem(problem)
     loaded = load_answer(Path(answer), prob, limits) if answer is not None else LoadedAnswer()
     for name, value in parts.items():
@@ -110,4 +184,6 @@ def check(problem: str | Problem, answer: str | Path | None = None, *, accuracy:
             loaded.values[prob.part(name).name] = value
         except KeyError:
             raise TypeError(f"problem {prob.id} has no part '{name}'") from None
-    return grade_values(prob, loaded, accuracy, hints=hints, credit=credit)
+    if grading_seconds is None:
+        grading_seconds = default_grading_seconds()
+    return grade_values(prob, loaded, accuracy, hints=hints, credit=credit, grading_seconds=grading_seconds)

@@ -1,0 +1,142 @@
+"""`lagrade check` and `lagrade.check()` are bounded in CPU time like bulk grading: an answer too
+large to compare gets a clear verdict, not a hang and not a traceback.
+
+The answer below (12.22, L a Piecewise of 2000 branches) ran for more than 60 s of CPU in
+`lagrade check` before the bound (killed by `timeout 60`; 500 branches took 30 s)."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+import lagrade
+from lagrade import grade
+from lagrade.bulk.assignment import Limits
+
+ROOT = Path(__file__).resolve().parents[1]
+REFERENCE = ROOT / "reference_solutions" / "12.22" / "answer.py"
+MESSAGE = "grading this answer took longer than 2 s of CPU time (the expressions are too large to compare)"
+
+HUGE = '''
+from sympy import Function, Piecewise, symbols
+
+t = symbols("t")
+m1, m2, m3, m4, g, l1, l2, l3 = symbols("m1 m2 m3 m4 g l1 l2 l3", positive=True)
+x, y, z = Function("x")(t), Function("y")(t), Function("z")(t)
+xd, yd, zd = x.diff(t), y.diff(t), z.diff(t)
+T = m1 / 2 * (xd + yd) ** 2 + m2 / 2 * (xd - yd) ** 2 + m3 / 2 * (zd - xd) ** 2 + m4 / 2 * (xd + zd) ** 2
+V = -g * (m1 * (x + y) + m2 * (x + l1 - y) + m3 * (l3 - x + z) + m4 * (l3 - x + l2 - z))
+L = Piecewise(*[(T - V + k * x * xd, x < k) for k in range(2000)], (T - V, True))
+'''
+
+
+@pytest.fixture
+def huge(tmp_path: Path) -> Path:
+    path = tmp_path / "answer.py"
+    path.write_text(HUGE)
+    return path
+
+
+def _no_bound_left() -> None:
+    assert signal.getitimer(signal.ITIMER_PROF) == (0.0, 0.0)
+    assert signal.getsignal(signal.SIGPROF) in (signal.SIG_DFL, None)
+
+
+@pytest.mark.parametrize("as_json", [True, False])
+def test_cli_check_gives_a_verdict_when_grading_runs_out_of_time(huge, as_json):
+    start = time.monotonic()
+    out = subprocess.run([sys.executable, "-m", "lagrade", "check", "12.22", str(huge), "--grading-seconds", "2",
+                          *(["--json"] if as_json else [])],
+                         capture_output=True, text=True, env={**os.environ, "COLUMNS": "200"}, timeout=90)
+    assert time.monotonic() - start < 45
+    assert out.returncode == 1, out.stderr  # graded, not full marks (2 is for unusable files)
+    assert "Traceback" not in out.stderr
+    if as_json:
+        result = json.loads(out.stdout)  # exactly one object
+        verdicts = {p["part"]: (p["verdict"], p["feedback"]) for p in result["parts"]}
+        assert verdicts["L"] == ("invalid", MESSAGE)
+        assert verdicts["eom"][0] == "missing"  # a part never given is still just missing
+    else:
+        assert "took longer than 2 s of CPU time" in out.stdout and "total 0 / 5" in out.stdout
+
+
+def test_library_check_is_bounded_in_process(huge):
+    start = time.process_time()
+    result = lagrade.check("12.22", huge, grading_seconds=2)
+    assert time.process_time() - start < 30
+    assert result.verdicts()["L"] == "invalid" and result.parts[0].feedback == MESSAGE
+    _no_bound_left()
+
+
+def test_check_defaults_to_the_bulk_bound(monkeypatch):
+    seen = {}
+    monkeypatch.setattr(grade, "grade_values", lambda *a, **kw: seen.update(kw))
+    lagrade.check("12.22", REFERENCE)
+    assert seen["grading_seconds"] == Limits().grading_seconds == grade.default_grading_seconds()
+
+
+def _spin(*args, **kwargs):
+    while True:
+        pass
+
+
+def test_parts_graded_in_time_keep_their_verdicts(monkeypatch):
+    from lagrade.checkers import CHECKERS
+
+    lagrade.check("12.22", REFERENCE, grading_seconds=120)  # references derived outside the bound below
+    monkeypatch.setitem(CHECKERS, "expression", _spin)  # a, S_t and a_case never finish
+    result = lagrade.check("12.22", REFERENCE, grading_seconds=1)
+    assert result.verdicts() == {"L": "correct", "eom": "correct", "a": "invalid", "S_t": "invalid",
+                                 "a_case": "invalid"}
+    assert "took longer than 1 s of CPU time" in result.parts[2].feedback
+    _no_bound_left()
+
+
+def test_off_the_main_thread_nothing_is_bounded():
+    """Signals reach only the main thread: elsewhere the bound is documented to be off."""
+    results = []
+    worker = threading.Thread(target=lambda: results.append(lagrade.check("12.22", REFERENCE, grading_seconds=1e-3)))
+    worker.start()
+    worker.join(120)
+    assert results and results[0].full_marks
+
+
+def test_an_alarm_the_bound_cut_off_is_disarmed():
+    """Cut off between arming its alarm and its `try`, the engine's own time bound (ITIMER_REAL)
+    would leave an alarm that later raises into unrelated code."""
+    before = signal.getsignal(signal.SIGALRM)
+    with pytest.raises(grade.GradingOutOfTime):
+        with grade.cpu_time_bound(0.2):
+            signal.signal(signal.SIGALRM, lambda *a: pytest.fail("stray alarm"))
+            signal.setitimer(signal.ITIMER_REAL, 30)
+            _spin()
+    assert signal.getitimer(signal.ITIMER_REAL) == (0.0, 0.0)
+    assert signal.getsignal(signal.SIGALRM) is before
+    _no_bound_left()
+
+
+def test_a_timer_armed_before_is_resumed():
+    signal.signal(signal.SIGPROF, signal.SIG_IGN)
+    try:
+        signal.setitimer(signal.ITIMER_PROF, 50, 1)
+        with grade.cpu_time_bound(10):
+            pass
+        left, interval = signal.getitimer(signal.ITIMER_PROF)
+        assert 49 < left < 51 and interval == 1  # not disarmed, not restarted from scratch either
+        assert signal.getsignal(signal.SIGPROF) == signal.SIG_IGN
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, signal.SIG_DFL)
+
+
+def test_a_bound_that_is_not_positive_is_refused():
+    with pytest.raises(ValueError):
+        lagrade.check("12.22", REFERENCE, grading_seconds=0)
