@@ -3,7 +3,7 @@
 - ``lagrade cache build [IDS...]``: derive, compile and integrate every reference of each problem ahead
   of time, by grading its bundled reference solution (or, without one, by deriving the scenes), so
   the first check of a class is as fast as the hundredth; and byte-compile lagrade's own modules.
-- ``lagrade cache info``: where the cache is and what it holds.
+- ``lagrade cache info``: where the cache is, what it holds, and whether its key is usable.
 - ``lagrade cache clear``: remove every entry.
 
 Registered in ``cli.py`` with ``main.add_command(cache)``.
@@ -92,6 +92,11 @@ def info() -> None:
     found = store.entries(directory)
     size = sum(p.stat().st_size for p in found)
     click.echo(f"cache: {directory}\nentries: {len(found)} ({size / 1e6:.1f} MB)")
+    try:
+        state = "present" if store.key(directory) else "none yet (made by the first entry)"
+    except store.UntrustedKey as exc:  # entries are then neither read nor written
+        state = f"refused, the cache is not used: {exc}; remove it and a new one is made"
+    click.echo(f"key: {state}")
 
 
 @cache.command()
