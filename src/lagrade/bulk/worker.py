@@ -4,7 +4,7 @@ A grader process (``python -m lagrade.bulk.worker``) is started once per core (o
 thread), loads the assignment's problems from their TOML text and derives their references once,
 then grades jobs sent over a pipe until the pipe closes. Grading runs on the process's main thread,
 so the engine's time-bounded proofs stay bounded, and under a CPU-time bound of its own
-(``ITIMER_PROF``; the engine uses ``ITIMER_REAL`` for its proofs). The student's code itself runs
+(`lagrade.grade.cpu_time_bound`; the engine uses ``ITIMER_REAL`` for its proofs). The student's code itself runs
 further down, in the engine's sandbox (a forked child with CPU, memory and wall-clock limits).
 The coordinator kills a grader process that overruns a hard deadline and starts a new one.
 """
@@ -29,10 +29,6 @@ from lagrade.process_env import single_threaded_blas
 #: kinds of status a submission gets; ``ok`` means the file ran (its parts carry the verdicts)
 STATUSES = ("ok", "error", "syntax", "rejected", "timeout", "memory", "crashed", "grader-timeout",
             "grader-crash")
-
-
-class _GradingOutOfTime(BaseException):
-    """Raised by SIGPROF; a BaseException so that the engine's per-part guards do not swallow it."""
 
 
 # =========================================================================== in the grader process
@@ -81,7 +77,7 @@ class Grader:
         from lagrade.answers.sandbox import SandboxLimits
         from lagrade.bulk.display import show
         from lagrade.credit import Credit
-        from lagrade.grade import grade_values
+        from lagrade.grade import GradingOutOfTime, cpu_time_bound, grade_values
 
         start = time.monotonic()
         problem = self.problems[job["problem"]]
@@ -89,28 +85,23 @@ class Grader:
         work = Path(tempfile.mkdtemp(prefix="lagrade-job-", dir=self.dir))
         path = work / f"{job['problem']}{job['suffix']}"
         path.write_bytes(job["data"])
-        previous = signal.signal(signal.SIGPROF, _on_sigprof)
-        signal.setitimer(signal.ITIMER_PROF, limits["grading_seconds"])
         try:
-            loaded = load_answer(path, problem, SandboxLimits(cpu_seconds=limits["cpu_seconds"],
-                                                               wall_seconds=limits["wall_seconds"],
-                                                               memory_mb=limits["memory_mb"]))
-            result = grade_values(problem, loaded, job["accuracy"],
-                                  credit=Credit.model_validate(job["credit"]) if job.get("credit") else None,
-                                  read_as=(), memo=self.memo)  # the gradebook keeps its own text and MathML
-            parts = []
-            for p in result.parts:
-                row = p.model_dump(exclude={"read_as"})
-                if p.part in loaded.values:
-                    row["answer_text"], row["answer_mathml"] = show(loaded.values[p.part])
-                parts.append(row)
-        except _GradingOutOfTime:
-            return failed_result(job, problem_parts(problem), "grader-timeout",
-                                 f"grading this answer took longer than {limits['grading_seconds']:g} s of CPU time "
-                                 f"(the expressions are too large to compare)", time.monotonic() - start)
+            with cpu_time_bound(limits["grading_seconds"]):
+                loaded = load_answer(path, problem, SandboxLimits(cpu_seconds=limits["cpu_seconds"],
+                                                                   wall_seconds=limits["wall_seconds"],
+                                                                   memory_mb=limits["memory_mb"]))
+                result = grade_values(problem, loaded, job["accuracy"],
+                                      credit=Credit.model_validate(job["credit"]) if job.get("credit") else None,
+                                      read_as=(), memo=self.memo)  # the gradebook keeps its own text and MathML
+                parts = []
+                for p in result.parts:
+                    row = p.model_dump(exclude={"read_as"})
+                    if p.part in loaded.values:
+                        row["answer_text"], row["answer_mathml"] = show(loaded.values[p.part])
+                    parts.append(row)
+        except GradingOutOfTime as exc:
+            return failed_result(job, problem_parts(problem), "grader-timeout", str(exc), time.monotonic() - start)
         finally:
-            signal.setitimer(signal.ITIMER_PROF, 0)
-            signal.signal(signal.SIGPROF, previous)
             shutil.rmtree(work, ignore_errors=True)
         unusable = loaded.fatal is not None and not loaded.values
         reason = str(loaded.fatal) if loaded.fatal is not None else ""
@@ -143,11 +134,6 @@ def _warm_up(problem, memo=None) -> None:
         grade_values(problem, load_answer(answer, problem), read_as=(), memo=memo)
     except Exception:  # noqa: BLE001  (a warm-up that fails only costs speed)
         pass
-
-
-def _on_sigprof(signum, frame) -> None:  # noqa: ARG001
-    signal.setitimer(signal.ITIMER_PROF, 0)
-    raise _GradingOutOfTime()
 
 
 def _status(reason: str) -> str:
