@@ -80,8 +80,9 @@ def test_the_process_that_runs_answers_never_held_the_key(tmp_path):
     references(problem)
     check(problem, reference_dir() / "12.22" / "answer.py")
     made = zygote.start()
+    made.hello()
     running = start_answer_file(_answer(tmp_path, "L = 1\nwhile True:\n    pass\n"), ["L"], FAST)
-    time.sleep(0.3)
+    time.sleep(0.5)
     processes = [made.proc.pid, *_descendants(made.proc.pid)]
     assert len(processes) >= 3, processes  # the zygote, its PID 1, the answer's child
     assert _memory_holds(os.getpid(), key), "the control failed: the search cannot find the key"

@@ -131,10 +131,7 @@ def start_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits =
         return RunningAnswer(SandboxOutcome(status="error" if syntax else "rejected", problems=problems))
     from lagrade.answers import zygote
 
-    try:
-        return RunningAnswer(finish=_start_in_jail(zygote.current(), source, path, list(wanted), limits))
-    except zygote.ZygoteError as exc:
-        return fail("crashed", f"the sandbox could not run the answer ({exc}); please report it to your instructor")
+    return RunningAnswer(finish=_start_in_jail(zygote.current(), source, path, list(wanted), limits))
 
 
 #: the Python-level screen, restricted builtins and audit hook: tripwires that give clear messages.
@@ -161,24 +158,46 @@ def prepare_zygote() -> None:
 
 
 def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: SandboxLimits):
-    """Have the zygote fork the child; return the function that collects its outcome."""
+    """Have the zygote fork the child; return the function that collects its outcome.
+
+    The request is sent from a thread: a zygote started with the check is still importing sympy
+    when the answer is read, and the caller meanwhile loads the references on the other core."""
+    import threading
+
+    from lagrade.answers.zygote import ZygoteError
+
     name = path.name
     token = secrets.token_hex(16)  # a report without it was not written by our child code
     result_r, result_w = os.pipe()
     out_r, out_w = os.pipe()
     child = {"source": source, "path": str(path), "name": name, "wanted": wanted,
              "limits": limits.model_dump(), "token": token, "tripwires": TRIPWIRES}
-    try:
-        pid = zyg.spawn(child, (result_w, out_w))
-    except BaseException:
-        for fd in (result_r, out_r):
-            os.close(fd)
-        raise
-    finally:
-        os.close(result_w)
-        os.close(out_w)
-    started = time.monotonic()
-    return lambda: _collect(pid, name, wanted, limits, token, result_r, out_r, started, zyg.reap)
+    spawned: dict[str, Any] = {}
+
+    def spawn() -> None:
+        try:
+            spawned["pid"] = zyg.spawn(child, (result_w, out_w))
+            spawned["at"] = time.monotonic()
+        except Exception as exc:  # noqa: BLE001  (told to the student as a sandbox failure, in finish)
+            spawned["error"] = exc if isinstance(exc, ZygoteError) else f"{type(exc).__name__}: {exc}"
+        finally:
+            os.close(result_w)
+            os.close(out_w)
+
+    thread = threading.Thread(target=spawn, name="lagrade-spawn", daemon=True)
+    thread.start()
+
+    def finish() -> SandboxOutcome:
+        thread.join()
+        if "pid" not in spawned:
+            os.close(result_r)
+            os.close(out_r)
+            return SandboxOutcome(status="crashed", problems=[AnswerProblem(
+                file=name, line=None, message=f"the sandbox could not run the answer ({spawned.get('error')}); "
+                                              "please report it to your instructor")])
+        return _collect(spawned["pid"], name, wanted, limits, token, result_r, out_r, spawned["at"], zyg.reap)
+
+    return finish
 
 
 def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, token: str, result_r: int, out_r: int,

@@ -77,7 +77,10 @@ class Zygote:
         if self._hello is None:
             with self.lock:
                 if self._hello is None:
-                    message, _ = _recv(self.sock)
+                    try:
+                        message, _ = _recv(self.sock)
+                    except (OSError, EOFError, ValueError) as exc:
+                        raise ZygoteError(f"the sandbox's zygote did not start ({exc or type(exc).__name__})") from exc
                     if not isinstance(message, dict) or "active" not in message:
                         raise ZygoteError(f"the sandbox's zygote did not start: {message}")
                     self._hello = message
