@@ -1,3 +1,3 @@
-from lagrade.cli import run
+from lagrade.launch import run
 
 run()

@@ -174,7 +174,7 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     if answer.suffix == ".py":
         from lagrade.answers import zygote
 
-        zygote.start()  # a fresh interpreter, started before the problem is read: it imports sympy meanwhile
+        zygote.current()  # started by the script already (lagrade.launch), or now: it imports sympy meanwhile
     try:
         p = _problem(problem_id, problems_dir)
     except click.UsageError as exc:

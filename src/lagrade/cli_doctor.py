@@ -43,7 +43,7 @@ L = 0
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 def doctor(as_json: bool) -> None:
     """Which layers of the answer jail are active on this machine, and a probe that they hold."""
-    from lagrade.answers import jail, sandbox, zygote
+    from lagrade.answers import jail, zygote
     from lagrade.library import reference_dir
 
     if not sys.platform.startswith("linux"):

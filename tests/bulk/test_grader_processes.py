@@ -70,9 +70,9 @@ def test_a_grader_process_saves_its_references_before_it_exits(tmp_path, monkeyp
 
 
 def test_a_killed_grader_leaves_no_files_behind(tmp_path):
-    # its folder holds the problems, the submission it was grading and the mount point of its
-    # zygote's jail: the coordinator made it, and removes it, since a process killed in the middle
-    # of a job cannot (the answer's working folder lives in the jail's own tmpfs, gone with it)
+    # its folder holds the problems and the submission it was grading: the coordinator made it, and
+    # removes it, since a process killed in the middle of a job cannot (the answer's working folder
+    # lives in the jail's own tmpfs, gone with it)
     loop = tmp_path / "loop.py"
     loop.write_text("x = 0\nwhile True:\n    x += 1\n")
     g = GraderProcess({"12.14": problem_path("12.14").read_text(encoding="utf-8")})
@@ -84,7 +84,6 @@ def test_a_killed_grader_leaves_no_files_behind(tmp_path):
     while not list(Path(g.dir).glob("lagrade-job-*/12.14.py")) and time.monotonic() < deadline:
         time.sleep(0.05)
     assert list(Path(g.dir).glob("lagrade-job-*/12.14.py")), "the grader never wrote the job's file"
-    assert list(Path(g.dir).glob("lagrade-jail-*")) or os.geteuid() != 0, "the zygote's jail is elsewhere"
     g.kill()
     assert not Path(g.dir).exists()
 

@@ -1,16 +1,14 @@
-"""Run a student's ``answer.py`` in a forked, locked-down child and get its values back as text.
+"""Run a student's ``answer.py`` in a jailed child and get its values back as data.
 
-Answer files are untrusted code.  The defence is layered, so that no single mistake opens the
-grader: static screening (:mod:`lagrade.answers.screen`), a restricted ``__builtins__`` with an
-importer that knows only sympy/math/lagrade.answer, a CPython audit hook that refuses file
-writes, reads outside Python's install, sockets, processes, introspection and code generation,
-resource limits (CPU, address space, file size, descriptors, processes), a private network
-namespace and dropped privileges where the OS allows, and finally a JSON-only channel back to the
-parent, which never unpickles or evaluates anything the child sends.
-
-The child is *forked* from the grader (in a bulk run, from the grader's fork server: see
-:mod:`lagrade.answers.forkserver`) so the already-imported sympy is reused (importing sympy takes
-about a second; forking takes milliseconds).
+The barrier is the operating system: the child is forked from the clean zygote
+(:mod:`lagrade.answers.zygote`, which never held a reference) and confines itself with the kernel's
+layers (:mod:`lagrade.answers.jail`) before it reads the answer. This module is the child's side of
+that and the grader's: what runs in the child (limits, then the jail, then the answer under the
+tripwires), and how its outcome is collected. The tripwires, a static screen
+(:mod:`lagrade.answers.screen`), restricted builtins and an audit hook, exist to tell a student in
+plain words what an answer may not do; they are not the defence. The child sends its values back as
+JSON, which the grader rebuilds from an allowlist (:mod:`lagrade.answers.rebuild`): nothing it sends
+is unpickled or evaluated.
 """
 
 from __future__ import annotations
@@ -25,11 +23,9 @@ import re
 import resource
 import secrets
 import selectors
-import shutil
 import signal
 import sys
 import sysconfig
-import tempfile
 import time
 import types
 from collections.abc import Sequence
