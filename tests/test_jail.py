@@ -185,3 +185,15 @@ def _broken_seccomp_path(tmp_path: Path) -> str:
         "class SyscallFilter:\n    def __init__(self, defaction):\n        pass\n    def add_rule(self, *a):\n        pass\n"
         "    def load(self):\n        raise OSError('no filter today')\n")
     return os.pathsep.join([str(fake), *[p for p in sys.path if p]])
+
+
+def test_landlock_alone_grants_around_site_packages_and_secrets(tmp_path):
+    """Without a mount namespace to cover them, Landlock grants a directory that holds site-packages
+    or a secret folder entry by entry, around it; an allowed package inside site-packages whole."""
+    stdlib = tmp_path / "lib"
+    for d in ("json", "site-packages/sympy/core", "site-packages/lagrade/_data/problems", "secret/inner"):
+        (stdlib / d).mkdir(parents=True)
+    (stdlib / "os.py").write_text("")
+    grants = jail.landlock_grants([str(stdlib), str(stdlib / "site-packages" / "sympy")],
+                                  [str(stdlib / "site-packages"), str(stdlib / "secret")])
+    assert grants == sorted([str(stdlib / "json"), str(stdlib / "os.py"), str(stdlib / "site-packages" / "sympy")])

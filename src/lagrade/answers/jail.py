@@ -251,7 +251,7 @@ def confine(layers: Iterable[str], uid: int | None, readable: Sequence[str], kee
         if _libc().prctl(38, 1, 0, 0, 0) != 0:  # PR_SET_NO_NEW_PRIVS
             failed["no_new_privs"] = os.strerror(ctypes.get_errno())
     if "landlock" in layers:
-        why = _landlock(readable, whole_stdlib="mount" in layers)
+        why = _landlock(readable)
         if why:
             failed["landlock"] = why
     if "seccomp" in layers:
@@ -299,10 +299,9 @@ def landlock_available() -> str | None:
     return None
 
 
-def _landlock(readable: Sequence[str], whole_stdlib: bool = False) -> str | None:
-    """Read-only access to ``readable`` and nothing else: no writes, no execution, no other file.
-    ``whole_stdlib``: inside the mount namespace, whose site-packages is an empty cover already, the
-    standard library is one rule rather than one per entry (about 200)."""
+def _landlock(readable: Sequence[str]) -> str | None:
+    """Read-only access to ``readable`` (`landlock_grants`) and nothing else: no writes, no
+    execution, no other file."""
     why = landlock_available()
     if why:
         return why
@@ -315,12 +314,11 @@ def _landlock(readable: Sequence[str], whole_stdlib: bool = False) -> str | None
         ctypes.set_errno(0)
         ruleset = landlock.Ruleset()
         for path in readable:
-            for entry in ((path,) if whole_stdlib else _landlock_entries(path)):
-                try:
-                    ctypes.set_errno(0)
-                    ruleset.allow(entry, rules=read if os.path.isdir(entry) else landlock.FSAccess.READ_FILE)
-                except OSError:
-                    pass
+            try:
+                ctypes.set_errno(0)
+                ruleset.allow(path, rules=read if os.path.isdir(path) else landlock.FSAccess.READ_FILE)
+            except OSError:
+                pass
         ctypes.set_errno(0)
         ruleset.apply()
         os.close(ruleset._fd)  # the rules are ours now; the descriptor is not needed
@@ -329,14 +327,38 @@ def _landlock(readable: Sequence[str], whole_stdlib: bool = False) -> str | None
     return None
 
 
-@functools.cache
-def _landlock_entries(path: str) -> tuple[str, ...]:
-    """The paths a Landlock rule grants for ``path``: the directory itself, or, for Python's standard
-    library, each of its entries but site-packages (Landlock cannot take a subdirectory back)."""
-    stdlib = os.path.realpath(sysconfig.get_paths()["stdlib"])
-    if path != stdlib:
-        return (path,)
-    return tuple(os.path.join(path, e) for e in sorted(os.listdir(path)) if e != "site-packages")
+def landlock_grants(allowed: Sequence[str], excluded: Sequence[str]) -> list[str]:
+    """The paths Landlock grants for ``allowed`` when no mount namespace hides ``excluded`` (the
+    site-packages and the secret folders that lie inside them): Landlock cannot take a subdirectory
+    back, so a directory holding an excluded one is granted entry by entry, around it. Computed
+    once, in the zygote."""
+    excluded = [e.rstrip("/") for e in excluded]
+
+    def under(path: str, top: str) -> bool:
+        return path == top or path.startswith(top.rstrip("/") + "/")
+
+    def grant(path: str) -> list[str]:
+        if any(under(path, e) for e in excluded):
+            return []
+        if not any(under(e, path) for e in excluded) or not os.path.isdir(path):
+            return [path]
+        out: list[str] = []
+        for entry in sorted(os.listdir(path)):
+            out += grant(os.path.join(path, entry))
+        return out
+
+    grants: set[str] = set()
+    for path in allowed:
+        inside = [e for e in excluded if under(path, e)]
+        if inside and all(_is_site_packages(e) for e in inside):
+            grants.add(path)  # an allowed package (sympy) in a site-packages that is otherwise hidden
+        else:
+            grants.update(grant(path))
+    return sorted(grants)
+
+
+def _is_site_packages(path: str) -> bool:
+    return os.path.basename(path) in ("site-packages", "dist-packages")
 
 
 #: opening a file for anything but reading (0o20000000 is __O_TMPFILE: O_TMPFILE without O_DIRECTORY,

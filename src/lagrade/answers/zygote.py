@@ -235,8 +235,11 @@ def _main(argv: list[str]) -> None:
         if "pid" in wanted:
             inactive["pid"] = "needs the mount namespace for its own /proc"
     active = [k for k in jail.LAYERS if k in wanted and k not in inactive]
+    # Landlock's grants: inside the mount namespace the covers hide site-packages and the secrets, so
+    # whole directories; without it, around them
+    grants = allowed if "mount" in active else jail.landlock_grants(allowed, [*hidden, *sandbox.secret_dirs()])
     _send(sock, {"active": active, "inactive": inactive})
-    _serve(sock, active, allowed, status_fd)
+    _serve(sock, active, grants, status_fd)
 
 
 def _open_status() -> int | None:
