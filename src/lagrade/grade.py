@@ -60,9 +60,9 @@ class GradingOutOfTime(BaseException):
 
 def default_grading_seconds() -> float:
     """Bulk grading's default bound (``[limits] grading_seconds``), so a check is bounded alike."""
-    from lagrade.bulk.assignment import Limits
+    from lagrade.limits import GRADING_SECONDS
 
-    return Limits.model_fields["grading_seconds"].default
+    return GRADING_SECONDS
 
 
 def out_of_time(seconds: float) -> str:

@@ -229,7 +229,7 @@ def _b(text):
 
 # =========================================================================== each child, on itself
 
-def confine(layers: Iterable[str], uid: int | None, readable: Sequence[str], keep_fd: int | None = None) -> dict[str, str]:
+def confine(layers: Iterable[str], uid: int | None, readable: Sequence[str]) -> dict[str, str]:
     """Apply the per-process layers to this process, in the order that lets each be set: another uid,
     no_new_privs, Landlock, seccomp last. ``uid`` is the jail uid for this answer (when running as
     root). Returns ``layer -> why not`` for those that could not be applied."""
@@ -237,11 +237,11 @@ def confine(layers: Iterable[str], uid: int | None, readable: Sequence[str], kee
     failed: dict[str, str] = {}
     if "uid" in layers:
         try:
-            if uid is not None and os.geteuid() == 0 and not _in_user_namespace():
+            if uid is not None and os.geteuid() == 0 and not in_user_namespace():
                 os.setgroups([])
                 os.setresgid(uid, uid, uid)
                 os.setresuid(uid, uid, uid)
-            elif _in_user_namespace():
+            elif in_user_namespace():
                 _drop_capabilities()  # uid 0 of our own user namespace: the real uid outside is unchanged
             else:
                 failed["uid"] = "not root and no user namespace: the answer keeps the grader's uid"
@@ -262,7 +262,7 @@ def confine(layers: Iterable[str], uid: int | None, readable: Sequence[str], kee
 
 
 @functools.cache
-def _in_user_namespace() -> bool:
+def in_user_namespace() -> bool:
     """True when this process's user namespace is not the initial one (uid 0 here is not root)."""
     try:
         with open("/proc/self/uid_map") as fh:
@@ -417,12 +417,16 @@ def _seccomp() -> str | None:
     return None
 
 
-def pdeathsig() -> None:
-    """Be killed when the parent process ends."""
+def die_with_parent(leave_if_orphaned: bool = True) -> None:
+    """Be killed when the parent process ends (``PR_SET_PDEATHSIG``), or leave now if it already has
+    (a grader with its coordinator, a zygote with its grader). A PID namespace's first process has
+    no parent in its namespace to check, so it only sets the signal."""
     try:
         _libc().prctl(1, signal.SIGKILL, 0, 0, 0)
     except Exception:  # noqa: BLE001
         pass
+    if leave_if_orphaned and os.getppid() == 1:
+        os._exit(0)
 
 
 def missing_minimum(active: Iterable[str]) -> str | None:

@@ -149,7 +149,10 @@ def prepare_zygote() -> None:
 
     from lagrade.answers import jail
 
-    for warm in (jail.landlock_available, jail.seccomp_available, _readable_dirs, secret_dirs):
+    # libc is found once here: ctypes' find_library runs ldconfig in a subprocess, which a child,
+    # inside the jail, would try on every answer (and a child whose zygote enters no namespace
+    # would otherwise load it first)
+    for warm in (jail._libc, jail.landlock_available, jail.seccomp_available, _readable_dirs, secret_dirs):
         warm()
 
 

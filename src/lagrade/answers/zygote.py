@@ -196,9 +196,7 @@ def _recv(sock: socket.socket) -> tuple[Any, list[int]]:
 def _main(argv: list[str]) -> None:
     """``python -m lagrade.answers.zygote FD LAYERS warm|cold STAGING``."""
     fd, wanted, warm, staging = int(argv[0]), set(filter(None, argv[1].split(","))), argv[2] == "warm", argv[3]
-    jail.pdeathsig()
-    if os.getppid() == 1:
-        os._exit(0)
+    jail.die_with_parent()
     sock = socket.socket(fileno=fd)
     from lagrade.answers import sandbox
 
@@ -215,8 +213,8 @@ def _main(argv: list[str]) -> None:
     allowed, hidden = jail.jail_dirs()
     status_fd = _open_status()
     inactive.update(jail.enter_namespaces(wanted & {"mount", "pid", "network", "uid"}))
-    jail._in_user_namespace()  # read (and kept) while /proc is still there: the jail has none
-    if "uid" in wanted and "uid" not in inactive and os.geteuid() != 0 and not jail._in_user_namespace():
+    jail.in_user_namespace()  # read (and kept) while /proc is still there: the jail has none
+    if "uid" in wanted and "uid" not in inactive and os.geteuid() != 0 and not jail.in_user_namespace():
         inactive["uid"] = "not root and no user namespace"
     if "pid" in wanted and "pid" not in inactive:
         pid = os.fork()  # the next process is PID 1 of the new namespace: it is the zygote from here on
@@ -224,7 +222,7 @@ def _main(argv: list[str]) -> None:
             sock.close()
             _, status = os.waitpid(pid, 0)
             os._exit(os.waitstatus_to_exitcode(status) & 0xFF)
-        jail.pdeathsig()
+        jail.die_with_parent(leave_if_orphaned=False)
     try:
         if "mount" in wanted and "mount" not in inactive:
             jail.build_root(allowed, hidden, sandbox.secret_dirs(), staging)
@@ -268,7 +266,7 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
     done: dict[int, tuple[int, float]] = {}  # reaped before the grader asked
     count = 0
     inside = "mount" in active
-    as_root = os.geteuid() == 0 and not jail._in_user_namespace()
+    as_root = os.geteuid() == 0 and not jail.in_user_namespace()
     while True:
         try:
             request, fds = _recv(sock)

@@ -37,6 +37,7 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from lagrade.credit import Credit
+from lagrade.limits import GRADING_SECONDS
 
 
 class AssignmentError(ValueError):
@@ -51,7 +52,7 @@ class Limits(BaseModel):
     cpu_seconds: float = Field(10, gt=0)
     wall_seconds: float = Field(20, gt=0)
     memory_mb: int = Field(1024, gt=0)
-    grading_seconds: float = Field(120, gt=0)
+    grading_seconds: float = Field(GRADING_SECONDS, gt=0)
 
     def sandbox(self):
         from lagrade.answers.sandbox import SandboxLimits

@@ -167,18 +167,11 @@ def failed_result(job: dict[str, Any], parts: list[tuple[str, float]], status: s
     }
 
 
-def die_with_parent() -> None:
-    """Be killed when the coordinator ends (``PR_SET_PDEATHSIG``), or leave now if it already has."""
-    from lagrade.answers.jail import pdeathsig
-
-    pdeathsig()
-    if os.getppid() == 1:
-        os._exit(0)
-
-
 def serve(conn: Any, parent_death_signal: bool = True) -> None:
     """The grader process's loop: warm up from the first message, then grade until EOF."""
     if parent_death_signal:
+        from lagrade.answers.jail import die_with_parent
+
         die_with_parent()
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the coordinator's business
     try:
