@@ -140,3 +140,62 @@ def test_a_timer_armed_before_is_resumed():
 def test_a_bound_that_is_not_positive_is_refused():
     with pytest.raises(ValueError):
         lagrade.check("12.22", REFERENCE, grading_seconds=0)
+
+
+@pytest.fixture
+def wall_clock_guard():
+    """A regression here would spin forever: fail after 60 s of wall time instead."""
+    def _fail(signum, frame):  # noqa: ARG001
+        pytest.fail("the CPU-time bound never ended the block")
+    previous = signal.signal(signal.SIGALRM, _fail)
+    signal.setitimer(signal.ITIMER_REAL, 60)
+    yield
+    signal.setitimer(signal.ITIMER_REAL, 0)
+    signal.signal(signal.SIGALRM, previous)
+
+
+def _swallow_once():
+    """What a gc callback, a ``__del__`` or a library's bare ``except:`` does to the first raise."""
+    try:
+        _spin()
+    except BaseException:  # noqa: BLE001
+        pass
+    _spin()
+
+
+@pytest.mark.filterwarnings("ignore::pytest.PytestUnraisableExceptionWarning")
+def test_a_swallowed_bound_is_raised_again(wall_clock_guard):
+    start = time.process_time()
+    with pytest.raises(grade.GradingOutOfTime):
+        with grade.cpu_time_bound(0.3):
+            _swallow_once()
+    assert time.process_time() - start < 5
+    _no_bound_left()
+
+
+@pytest.mark.filterwarnings("ignore::pytest.PytestUnraisableExceptionWarning")
+def test_a_bound_raised_inside_a_gc_callback_still_ends_the_grading(wall_clock_guard):
+    """Python prints and drops an exception raised in a gc callback (hypothesis installs one), and a
+    signal that arrives during a collection is handled in the first callback: the CI failure of
+    2026-11-25, where a 2 s bound ran for 570 s. Here half the CPU time is spent collecting."""
+    import gc
+
+    def callback(phase, info):  # noqa: ARG001
+        end = time.process_time() + 0.005
+        while time.process_time() < end:
+            pass
+
+    gc.callbacks.append(callback)
+    try:
+        start = time.process_time()
+        with pytest.raises(grade.GradingOutOfTime):
+            with grade.cpu_time_bound(0.3):
+                while True:
+                    end = time.process_time() + 0.01
+                    while time.process_time() < end:
+                        pass
+                    gc.collect()
+        assert time.process_time() - start < 10
+    finally:
+        gc.callbacks.remove(callback)
+    _no_bound_left()

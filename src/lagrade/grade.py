@@ -76,7 +76,12 @@ def cpu_time_bound(seconds: float | None) -> Iterator[None]:
     CPU time (``ITIMER_PROF``: the engine's own proofs use ``ITIMER_REAL``, and time spent waiting on
     the sandbox child is not the grader's work). Signals reach only the main thread, so elsewhere,
     and for ``None`` or ``math.inf``, nothing is bounded. A timer armed before (a profiler's) is
-    paused meanwhile and resumed after."""
+    paused meanwhile and resumed after.
+
+    The timer keeps firing every :data:`RAISE_AGAIN` s of CPU until the block is left: an exception
+    raised inside a gc callback or a ``__del__`` is printed and dropped by Python, and a bare
+    ``except:`` in a library swallows it, so one signal alone may not end the grading (CI saw a
+    2 s bound run for 570 s that way)."""
     if seconds is not None and not seconds > 0:  # setitimer(0) would mean no bound at all
         raise ValueError(f"grading_seconds must be positive, not {seconds!r}")
     if (seconds is None or math.isinf(seconds) or not hasattr(signal, "setitimer")
@@ -84,24 +89,30 @@ def cpu_time_bound(seconds: float | None) -> Iterator[None]:
         yield
         return
 
+    state = {"expired": False, "leaving": False}
+
     def _expired(signum, frame):  # noqa: ARG001
-        signal.setitimer(signal.ITIMER_PROF, 0)
-        raise GradingOutOfTime(out_of_time(seconds))
+        if not state["leaving"]:
+            state["expired"] = True
+            raise GradingOutOfTime(out_of_time(seconds))
 
     alarm = signal.getsignal(signal.SIGALRM)
     previous = signal.signal(signal.SIGPROF, _expired)
-    outer = signal.setitimer(signal.ITIMER_PROF, seconds)  # a profiler's, say: paused meanwhile
+    outer = signal.setitimer(signal.ITIMER_PROF, seconds, RAISE_AGAIN)  # a profiler's: paused meanwhile
     try:
         yield
-    except GradingOutOfTime:
-        if signal.getsignal(signal.SIGALRM) is not alarm:  # cut off inside the engine's own time bound,
-            signal.setitimer(signal.ITIMER_REAL, 0)        # before it could disarm its alarm
-            signal.signal(signal.SIGALRM, alarm)
-        raise
     finally:
+        state["leaving"] = True
         signal.setitimer(signal.ITIMER_PROF, 0)
         signal.signal(signal.SIGPROF, previous)
+        if state["expired"] and signal.getsignal(signal.SIGALRM) is not alarm:
+            signal.setitimer(signal.ITIMER_REAL, 0)  # cut off inside the engine's own time bound,
+            signal.signal(signal.SIGALRM, alarm)     # before it could disarm its alarm
         signal.setitimer(signal.ITIMER_PROF, *outer)
+
+
+RAISE_AGAIN = 0.05
+"""CPU seconds between repeated :class:`GradingOutOfTime` raises once the bound is spent."""
 
 
 def _check(ctx: Context, part, value) -> tuple[PartResult, bool]:
