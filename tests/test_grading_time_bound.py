@@ -199,3 +199,20 @@ def test_a_bound_raised_inside_a_gc_callback_still_ends_the_grading(wall_clock_g
     finally:
         gc.callbacks.remove(callback)
     _no_bound_left()
+
+
+def test_a_proof_step_whose_alarm_is_swallowed_still_stops(wall_clock_guard):
+    """sympy catches ``Exception`` in places: a proof step must still give up on time, or a slow
+    proof of a right answer would meet the grading bound and be marked as taking too long."""
+    from lagrade.compare import symbolic
+
+    def swallowing_step():
+        try:
+            _spin()
+        except Exception:  # noqa: BLE001,S110  (as sympy does)
+            pass
+        _spin()
+
+    with pytest.raises(symbolic._OutOfTime):
+        with symbolic.time_bound(0.2):
+            swallowing_step()
