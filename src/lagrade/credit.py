@@ -1,6 +1,6 @@
 """Partial credit: how much of a part's weight an almost-right answer earns.
 
-The defaults below are documented in the README; an assignment (or ``lagrade check --credit``)
+The defaults below are documented in docs/answers.md; an assignment (or ``lagrade check --credit``)
 may change any of them.
 """
 

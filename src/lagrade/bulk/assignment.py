@@ -83,7 +83,7 @@ class Assignment(BaseModel):
     title: str = ""
     accuracy: Literal["fast", "default", "strict"] = "default"
     limits: Limits = Limits()
-    #: partial-credit policy (lagrade.credit.Credit); the defaults are documented in the README
+    #: partial-credit policy (lagrade.credit.Credit); the defaults are documented in docs/answers.md
     credit: Credit = Credit()
     problems: list[AssignedProblem] = Field(min_length=1)
 
