@@ -126,14 +126,14 @@ def test_cache_off(monkeypatch):
 
 
 def test_answers_can_never_read_the_cache(monkeypatch, tmp_path):
-    from lagrade.answers import sandbox
+    from lagrade.answers import child
 
     monkeypatch.setenv("LAGRADE_CACHE", str(tmp_path / "c"))
-    sandbox.secret_dirs.cache_clear()
+    child.secret_dirs.cache_clear()
     try:
-        assert str((tmp_path / "c").resolve()) in sandbox.secret_dirs()
+        assert str((tmp_path / "c").resolve()) in child.secret_dirs()
     finally:
-        sandbox.secret_dirs.cache_clear()
+        child.secret_dirs.cache_clear()
 
 
 def test_cache_commands(tmp_path):

@@ -1,4 +1,5 @@
-"""Where problem files and reference solutions live, and finding a problem by its id.
+"""Where problem files, reference solutions and the reference cache live, and finding a problem by
+its id. The sandbox hides all three from answers, so their places are named here, below both.
 
 Problems are data: the bundled ones ship inside the package (or sit in the source tree for an
 editable install), and an instructor adds their own with ``--problems DIR`` or ``LAGRADE_PROBLEMS``
@@ -31,9 +32,25 @@ def reference_dir() -> Path:
     return _bundled("reference_solutions")
 
 
-def _sort_key(pid: str) -> tuple[int, int]:
-    kind = 0 if pid.startswith("12.") else (1 if pid.startswith("ex") else 2)
-    return kind, int(re.sub(r"^\D*12\.", "", pid))
+CACHE_ENV = "LAGRADE_CACHE"
+
+
+def cache_dir() -> Path | None:
+    """Where the reference cache's entries live (:mod:`lagrade.cache`), or None when caching is off."""
+    setting = os.environ.get(CACHE_ENV, "")
+    if setting.lower() in ("off", "0", "no", "false"):
+        return None
+    if setting:
+        return Path(setting).expanduser()
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "lagrade"
+
+
+def _sort_key(pid: str) -> tuple:
+    """The chapter's problems, then its exercises and examples, then any other course's ids; each
+    in natural order (12.2 before 12.10, hw7-q2 before hw7-q10)."""
+    group = next((i for i, prefix in enumerate(("12.", "ex12.", "eg12.")) if pid.startswith(prefix)), 3)
+    return group, [(0, int(chunk), "") if chunk.isdigit() else (1, 0, chunk) for chunk in re.findall(r"\d+|\D+", pid)]
 
 
 @lru_cache(maxsize=8)
@@ -44,8 +61,7 @@ def _index(dirs: tuple[Path, ...]) -> dict[str, Path]:
             continue
         for f in sorted(d.glob("*.toml")):
             found.setdefault(f.stem, f)
-    return dict(sorted(found.items(), key=lambda kv: _sort_key(kv[0]) if re.match(r"^(ex|eg)?12\.\d+$", kv[0])
-                       else (9, 0)))
+    return dict(sorted(found.items(), key=lambda kv: _sort_key(kv[0])))
 
 
 def problem_ids(extra: tuple[Path, ...] = ()) -> list[str]:

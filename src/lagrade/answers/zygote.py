@@ -103,7 +103,7 @@ class Zygote:
         return reply
 
     def spawn(self, child: dict[str, Any], fds: tuple[int, int]) -> int:
-        """Fork a child running ``child`` (`lagrade.answers.sandbox.child_main`'s arguments), writing
+        """Fork a child running ``child`` (`lagrade.answers.child.child_main`'s arguments), writing
         its report and output to ``fds``; its pid (in the zygote's PID namespace)."""
         return int(self.request({"op": "spawn", "child": child}, fds)["pid"])
 
@@ -198,9 +198,9 @@ def _main(argv: list[str]) -> None:
     fd, wanted, warm, staging = int(argv[0]), set(filter(None, argv[1].split(","))), argv[2] == "warm", argv[3]
     jail.die_with_parent()
     sock = socket.socket(fileno=fd)
-    from lagrade.answers import sandbox
+    from lagrade.answers import child as child_code
 
-    sandbox.prepare_zygote()
+    child_code.prepare_zygote()
     if warm:
         _warm_sympy()
     inactive: dict[str, str] = {}
@@ -225,7 +225,7 @@ def _main(argv: list[str]) -> None:
         jail.die_with_parent(leave_if_orphaned=False)
     try:
         if "mount" in wanted and "mount" not in inactive:
-            jail.build_root(allowed, hidden, sandbox.secret_dirs(), staging)
+            jail.build_root(allowed, hidden, child_code.secret_dirs(), staging)
         elif "pid" in wanted and "pid" not in inactive:
             jail.mount_proc()
     except OSError as exc:
@@ -235,7 +235,7 @@ def _main(argv: list[str]) -> None:
     active = [k for k in jail.LAYERS if k in wanted and k not in inactive]
     # Landlock's grants: inside the mount namespace the covers hide site-packages and the secrets, so
     # whole directories; without it, around them
-    grants = allowed if "mount" in active else jail.landlock_grants(allowed, [*hidden, *sandbox.secret_dirs()])
+    grants = allowed if "mount" in active else jail.landlock_grants(allowed, [*hidden, *child_code.secret_dirs()])
     _send(sock, {"active": active, "inactive": inactive})
     _serve(sock, active, grants, status_fd)
 
@@ -260,7 +260,7 @@ def _vm_size(status_fd: int | None) -> int:
 
 
 def _serve(sock: socket.socket, active: list[str], readable: list[str], status_fd: int | None) -> None:
-    from lagrade.answers import sandbox
+    from lagrade.answers import child as child_code
 
     workdirs: dict[int, str] = {}
     done: dict[int, tuple[int, float]] = {}  # reaped before the grader asked
@@ -287,13 +287,13 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
                 pid = os.fork()
                 if pid == 0:  # the child: never returns
                     sock.close()
-                    sandbox.child_main(request["child"], workdir, result_w, out_w,
+                    child_code.child_main(request["child"], workdir, result_w, out_w,
                                        layers=active, uid=uid, readable=readable, vm_size=vm)
                 workdirs[pid] = workdir
                 reply: dict[str, Any] = {"pid": pid}
             elif request.get("op") == "reap":
                 pid = int(request["pid"])
-                status, cpu = done.pop(pid) if pid in done else sandbox.reap_child(pid, bool(request["kill"]),
+                status, cpu = done.pop(pid) if pid in done else child_code.reap_child(pid, bool(request["kill"]),
                                                                             float(request["deadline"]))
                 shutil.rmtree(workdirs.pop(pid, ""), ignore_errors=True) if pid in workdirs else None
                 reply = {"status": status, "cpu": cpu}
