@@ -1,6 +1,15 @@
-"""lagrade: grades answers to Lagrangian and Hamiltonian dynamics problems."""
+"""lagrade: grades answers to Lagrangian and Hamiltonian dynamics problems.
 
-__version__ = "0.1.0"
+The public API: :func:`check`, :func:`load_problem`, :class:`CheckResult`, :class:`Problem`. They
+are loaded on first use, because every sandbox child imports this package (``lagrade.answer``) and
+must not pay for, or hold, the grader.
+"""
+
+from lagrade._version import __version__
+
+__all__ = ["CheckResult", "Problem", "__version__", "check", "load_problem"]
+
+_LAZY = {"CheckResult": "lagrade.result", "Problem": "lagrade.spec", "load_problem": "lagrade.library"}
 
 
 def check(problem, answer=None, **kwargs):
@@ -10,4 +19,9 @@ def check(problem, answer=None, **kwargs):
     return _check(problem, answer, **kwargs)
 
 
-__all__ = ["check", "__version__"]
+def __getattr__(name: str):
+    if name in _LAZY:
+        import importlib
+
+        return getattr(importlib.import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'lagrade' has no attribute {name!r}")

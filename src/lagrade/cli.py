@@ -217,7 +217,7 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     if as_json:
         click.echo(result.model_dump_json())
     else:
-        from lagrade.report import render
+        from lagrade.result import render
 
         from rich.console import Console  # only for people: --json never pays for it
 

@@ -72,10 +72,8 @@ def _compile_bytecode() -> None:
     is written and nothing fails."""
     import compileall
 
-    import lagrade
-
     try:
-        compileall.compile_dir(Path(lagrade.__file__).parent, quiet=2)
+        compileall.compile_dir(Path(__file__).parent, quiet=2)
     except OSError:
         pass
 

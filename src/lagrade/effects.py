@@ -1,7 +1,7 @@
 """Declared effects: what a scene says it involves, checked against what its expressions use.
 
 A scene declares its physical effects (``effects = [...]`` in the problem file). The numerical model
-is assembled from those declarations only (`lagrade.numerics.model`): contact events only for
+is assembled from those declarations only (`lagrade.scene_model`): contact events only for
 unilateral contact, multiplier functions only when constraint forces are asked, an explicit time
 argument only for time-dependent scenes, velocity-dependent forces (and their switching events)
 only for dissipation. For that to be safe, a scene must not *use* an effect it does not declare;
@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, get_args
 
 import sympy as sp
 
-from lagrade.spec import Effect
+from lagrade.spec import Effect, SceneError
 from lagrade.symbols import T
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -85,9 +85,7 @@ def _uses_time(mech: Mechanics) -> list[str]:
 
 
 def validate_effects(mech: Mechanics) -> None:
-    """Raise `lagrade.reference.SceneError` naming every effect the scene uses but does not declare."""
-    from lagrade.reference import SceneError
-
+    """Raise `SceneError` naming every effect the scene uses but does not declare."""
     sys_ = mech.system
     eff = set(sys_.effects)
     label = f"system '{sys_.key}'" if sys_.key else "the scene"

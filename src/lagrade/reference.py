@@ -17,12 +17,8 @@ import sympy as sp
 from lagrade.answers.text import parse_math
 from lagrade.compare.rates import CompiledRates
 from lagrade.numeric import Vectorized, as_row, call_blocks, compile_exprs, compile_linear_solve
-from lagrade.spec import Problem, System
+from lagrade.spec import Problem, SceneError, System
 from lagrade.symbols import T, StateSymbols, to_state
-
-
-class SceneError(ValueError):
-    """A scene whose expressions do not make a usable mechanical system."""
 
 
 def total_derivative(expr: sp.Expr, s: StateSymbols) -> sp.Expr:
@@ -36,6 +32,16 @@ def total_derivative(expr: sp.Expr, s: StateSymbols) -> sp.Expr:
 def euler_lagrange(L: sp.Expr, s: StateSymbols) -> list[sp.Expr]:
     """d/dt dL/dqd - dL/dq for each coordinate."""
     return [total_derivative(sp.diff(L, qd), s) - sp.diff(L, q) for q, qd in zip(s.q, s.qd)]
+
+
+
+def split_energy(L: sp.Expr, mech: Mechanics) -> tuple[sp.Expr, sp.Expr]:
+    """T and V from L: terms with velocities are kinetic, the rest is -V (for diagnostics, and for
+    the energy the stability checks follow)."""
+    terms = sp.Add.make_args(sp.expand(L))
+    vel = set(mech.s.qd)
+    kin = sp.Add(*[term for term in terms if term.free_symbols & vel])
+    return kin, -(sp.expand(L) - kin)
 
 
 class Mechanics:

@@ -60,6 +60,11 @@ class SpecError(ValueError):
     """A problem file that cannot be used; the message names the file and what was expected."""
 
 
+class SceneError(ValueError):
+    """A scene whose expressions do not make a usable mechanical system (found while deriving it, or
+    checking the effects it declares: both below the derivation, so the error lives here)."""
+
+
 class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 

@@ -30,7 +30,7 @@ ResultCallback = Callable[[dict[str, Any]], None]
 
 
 def grader_version() -> str:
-    from lagrade import __version__
+    from lagrade._version import __version__
 
     return __version__
 
