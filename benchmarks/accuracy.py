@@ -18,7 +18,7 @@ import numpy as np
 
 from lagrade.compare.trajectory import ACCURACY, estimate_stiffness, integrate
 from lagrade.library import load_problem
-from lagrade.numerics import workprecision as wp
+from lagrade.research import workprecision as wp
 from lagrade.reference import Mechanics
 
 

@@ -5,14 +5,14 @@
 For each scene the same sampled trajectories are integrated (DOP853, default tolerances) with the model
 assembled from the declared effects, with all machinery compiled (explicit t, velocity-force term,
 multipliers and contact events on every constraint, switching events), and with the grader's generic
-reference right-hand side. See lagrade.numerics.effectsbench.
+reference right-hand side. See lagrade.research.effectsbench.
 """
 
 from __future__ import annotations
 
 import sys
 
-from lagrade.numerics.effectsbench import compare_scene, format_rows
+from lagrade.research.effectsbench import compare_scene, format_rows
 
 IDS = ("12.43", "12.14", "12.7", "12.16", "12.22", "12.34", "12.35", "12.4", "12.23", "12.49")
 

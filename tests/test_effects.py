@@ -14,7 +14,7 @@ from click.testing import CliRunner
 from lagrade.cli import main
 from lagrade.effects import DISSIPATION, TIME_CAPABLE, machinery
 from lagrade.library import load_problem, problem_ids
-from lagrade.numerics.model import SceneModel
+from lagrade.scene_model import SceneModel
 from lagrade.reference import Mechanics, SceneError
 from lagrade.sampling import rng_for, sample_points, state_arrays
 from lagrade.spec import Problem

@@ -36,7 +36,7 @@ def bench() -> None:
 def accuracy(ids: tuple[str, ...], out_dir: Path, methods: str, tolerances: str, K: int, repeat: int,
              no_plot: bool) -> None:
     """Work-precision sweep of each scene IDS (default: 12.14 12.43); ID may be 12.8:b for a system."""
-    from lagrade.numerics import workprecision as wp
+    from lagrade.research import workprecision as wp
 
     tols = _tolerances(tolerances)
     sweeps = []
@@ -69,7 +69,7 @@ def _tolerances(text: str) -> tuple[float, ...]:
 @click.option("--repeat", default=3, show_default=True)
 def effects(ids: tuple[str, ...], repeat: int) -> None:
     """The machinery each scene compiles from its declared effects, and its cost against all machinery."""
-    from lagrade.numerics.effectsbench import compare_scene, format_rows
+    from lagrade.research.effectsbench import compare_scene, format_rows
 
     rows = [compare_scene(pid, repeat=repeat) for pid in (ids or ("12.43", "12.14", "12.7", "12.4", "12.34"))]
     click.echo(format_rows(rows))

@@ -6,7 +6,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.library import load_problem
-from lagrade.numerics.model import SceneModel
+from lagrade.scene_model import SceneModel
 from lagrade.reference import Mechanics
 from lagrade.spec import Problem
 

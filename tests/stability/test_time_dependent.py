@@ -16,7 +16,7 @@ import pytest
 
 from lagrade.compare.trajectory import ACCURACY, integrate
 from lagrade.library import load_problem
-from lagrade.numerics.model import SceneModel
+from lagrade.scene_model import SceneModel
 from lagrade.sampling import rng_for, sample_points, state_arrays
 
 from .helpers import mechanics, reference_rates

@@ -20,7 +20,7 @@ from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs
 from lagrade.compare.rates import CompiledRates
 from lagrade.numeric import Vectorized, agree, compile_exprs, evaluate, scale_of
-from lagrade.reference import Mechanics
+from lagrade.reference import Mechanics, split_energy
 from lagrade.result import PartResult
 from lagrade.sampling import rng_for, sample_points, state_arrays, with_reference_dynamics
 from lagrade.spec import Part
@@ -68,7 +68,7 @@ def _contact_events(mech: Mechanics, y0: np.ndarray, params: np.ndarray) -> list
     the true motion leaves the surface (the model is not valid beyond it)."""
     if "unilateral_contact" not in mech.system.effects or not mech.multiplier_exprs:
         return []
-    from lagrade.numerics.model import SceneModel
+    from lagrade.scene_model import SceneModel
 
     return [e for e in SceneModel(mech).events(y0, params) if e.action == "stop"]
 
@@ -161,14 +161,6 @@ def _try(fn: Callable[[], Comparison]) -> Comparison | None:
         return fn()
     except Exception:  # noqa: BLE001
         return None
-
-
-def split_energy(L: sp.Expr, mech: Mechanics) -> tuple[sp.Expr, sp.Expr]:
-    """T and V from L: terms with velocities are kinetic, the rest is -V (good for diagnostics)."""
-    terms = sp.Add.make_args(sp.expand(L))
-    vel = set(mech.s.qd)
-    kin = sp.Add(*[term for term in terms if term.free_symbols & vel])
-    return kin, -(sp.expand(L) - kin)
 
 
 # ----------------------------------------------------------------------------- the Lagrangian

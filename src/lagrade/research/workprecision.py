@@ -29,8 +29,8 @@ import numpy as np
 
 from lagrade.compare.trajectory import ACCURACY, Accuracy, integrate
 from lagrade.library import load_problem
-from lagrade.numerics.model import SceneModel
-from lagrade.numerics.symplectic import StormerVerlet, hamilton_rates, implicit_midpoint, is_conservative, is_separable
+from lagrade.scene_model import SceneModel
+from lagrade.research.symplectic import StormerVerlet, hamilton_rates, implicit_midpoint, is_conservative, is_separable
 from lagrade.reference import Mechanics
 from lagrade.sampling import rng_for, sample_points, state_arrays
 

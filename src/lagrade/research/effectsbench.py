@@ -16,10 +16,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from lagrade.numerics.workprecision import _timed
+from lagrade.research.workprecision import _timed
 from lagrade.compare.trajectory import ACCURACY, integrate
 from lagrade.library import load_problem
-from lagrade.numerics.model import SceneModel
+from lagrade.scene_model import SceneModel
 from lagrade.reference import Mechanics
 from lagrade.sampling import rng_for, sample_points, state_arrays
 

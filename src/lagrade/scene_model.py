@@ -25,7 +25,7 @@ import sympy as sp
 from lagrade.compare.trajectory import BatchedEvent
 from lagrade.effects import Machinery, machinery
 from lagrade.numeric import compile_exprs, solve_batch
-from lagrade.reference import Mechanics
+from lagrade.reference import Mechanics, split_energy
 from lagrade.symbols import T
 
 
@@ -247,8 +247,6 @@ class SceneModel:
     def energy(self, Y: np.ndarray, t, params: np.ndarray) -> np.ndarray:
         """E = T + V from the scene's L (terms with velocities are T): for the stability checks."""
         if not hasattr(self, "_E"):
-            from lagrade.checkers.dynamics import split_energy
-
             kin, pot = split_energy(self.mech.L, self.mech)
             self._E = compile_exprs([kin + pot], self.mech.args)
         n = self.n
