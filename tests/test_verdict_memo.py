@@ -116,7 +116,7 @@ def test_an_engine_error_is_not_kept(pendulum, monkeypatch):
     monkeypatch.setitem(CHECKERS, kind, lambda ctx, part, value: 1 / 0)
     memo = VerdictMemo()
     failed = grade_values(problem, answer, only=["L"], read_as=(), memo=memo)
-    assert "could not grade this part" in failed.parts[0].feedback
+    assert failed.parts[0].verdict == "error" and "could not grade this part" in failed.parts[0].feedback
     monkeypatch.setitem(CHECKERS, kind, real)
     assert grade_values(problem, answer, only=["L"], read_as=(), memo=memo).parts[0].verdict == "correct"
 

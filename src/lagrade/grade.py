@@ -11,6 +11,7 @@ import math
 import os
 import signal
 import threading
+import traceback
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -48,9 +49,13 @@ def keep_references(problem: Problem) -> bool:
     return refs is not None and cache.save(refs)
 
 
-def _unusable(part, verdict: str, feedback: str) -> PartResult:
+def _unusable(part, verdict: str, feedback: str, detail: str | None = None) -> PartResult:
     return PartResult(part=part.name, verdict=verdict, score=0.0, max_score=part.weight, method="exact",
-                      feedback=feedback)
+                      feedback=feedback, detail=detail)
+
+
+ENGINE_ERROR = ("lagrade could not grade this part: this is an error in lagrade, not a judgement of your "
+                "answer; your instructor can see what went wrong")
 
 
 class GradingOutOfTime(BaseException):
@@ -123,11 +128,12 @@ def _check(ctx: Context, part, value) -> tuple[PartResult, bool]:
         return _unusable(part, "invalid", str(exc)), True
     except SceneError:
         raise
-    except Exception as exc:  # noqa: BLE001  (a grader bug must not sink the other parts)
+    except Exception:  # noqa: BLE001  (a grader bug must not sink the other parts)
         if os.environ.get("LAGRADE_DEBUG"):
             raise
-        return _unusable(part, "invalid", f"lagrade could not grade this part ({type(exc).__name__}: "
-                                          f"{exc}); please report it to your instructor"), False
+        # an ``error``, never ``invalid``: the answer was readable. The traceback (whose messages may
+        # quote reference expressions) is for instructors only, never in what a student is shown
+        return _unusable(part, "error", ENGINE_ERROR, detail=traceback.format_exc(limit=-8)), False
 
 
 def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "default",

@@ -12,7 +12,8 @@ if TYPE_CHECKING:  # rich is loaded only to render: graders and the API need the
     from rich.console import Console
     from rich.table import Table
 
-Verdict = Literal["correct", "partial", "incorrect", "missing", "invalid"]
+#: ``error`` is lagrade's own failure on a readable answer: not the student's, and regraded by a fix
+Verdict = Literal["correct", "partial", "incorrect", "missing", "invalid", "error"]
 Method = Literal["symbolic", "numeric", "trajectory", "exact"]
 
 
@@ -27,6 +28,9 @@ class PartResult(BaseModel):
     feedback: str = ""
     read_as: str | None = Field(default=None, description="the answer as lagrade understood it (LaTeX)")
     read_as_text: str | None = Field(default=None, exclude=True, description="the same, for a terminal")
+    detail: str | None = Field(default=None, exclude=True,
+                               description="for instructors: the engine's traceback of an `error`; never "
+                                           "serialized, so never in what a student is shown")
     #: how to integrate this part's motion again (student and reference), for pictures; not serialized
     _trajectory: object = PrivateAttr(default=None)
 
@@ -59,7 +63,7 @@ class CheckResult(BaseModel):
                 f"<th>feedback</th></tr>{rows}</table>")
 
 
-_STYLE = {"correct": "green", "partial": "yellow", "incorrect": "red", "missing": "magenta", "invalid": "red"}
+_STYLE = {"correct": "green", "partial": "yellow", "incorrect": "red", "missing": "magenta", "invalid": "red", "error": "bold red"}
 
 
 def table(result: CheckResult) -> Table:
