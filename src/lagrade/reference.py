@@ -14,11 +14,17 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from lagrade.answers.text import parse_math
 from lagrade.compare.rates import CompiledRates
-from lagrade.numeric import Vectorized, as_row, call_blocks, compile_exprs, compile_linear_solve
+from lagrade.notation import parse_math
+from lagrade.numeric import (
+    Vectorized,
+    as_row,
+    call_blocks,
+    compile_exprs,
+    compile_linear_solve,
+)
 from lagrade.spec import Problem, SceneError, System
-from lagrade.symbols import T, StateSymbols, to_state
+from lagrade.symbols import StateSymbols, T, to_state
 
 
 def total_derivative(expr: sp.Expr, s: StateSymbols) -> sp.Expr:
@@ -103,7 +109,9 @@ class Mechanics:
         self.force = [-e.xreplace(zero_acc) for e in self.EL]
         if any(self.mass.has(a) for a in self.s.qdd):
             raise SceneError("Lagrange's equations are not linear in the accelerations")
-        from lagrade.effects import validate_effects  # a scene may only use the effects it declares
+        from lagrade.effects import (
+            validate_effects,  # a scene may only use the effects it declares
+        )
 
         validate_effects(self)
 

@@ -35,17 +35,21 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.answers.rebuild import MAX_DERIVATIVE_ORDER, RebuildError, check_int, check_name, check_power
+from lagrade.answers import latex_subset
+from lagrade.answers.latex_subset import GREEK
+from lagrade.notation import (
+    MAX_DERIVATIVE_ORDER,
+    RebuildError,
+    check_int,
+    check_name,
+    check_power,
+)
 
 MAX_LATEX_CHARS = 2000  # sympy's ANTLR parser takes about 2 ms per character
 MAX_BRACE_DEPTH = 40
 MAX_REBUILD_DEPTH = 150
 T = sp.Symbol("t")
 
-GREEK = set(
-    "alpha beta gamma delta epsilon varepsilon zeta eta theta vartheta iota kappa varkappa lambda mu nu xi "
-    "pi varpi rho varrho sigma varsigma tau upsilon phi varphi chi psi omega "
-    "Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega".split())
 FUNCTIONS = set("sin cos tan cot sec csc arcsin arccos arctan arccot arcsec arccsc sinh cosh tanh "
                 "exp ln log".split())
 _TEXT_COMMANDS = {"mathrm", "text", "mathit", "operatorname", "textrm", "textit", "rm"}
@@ -93,7 +97,7 @@ def parse_latex_answer(text: str, coordinates: Sequence[str], known_names: Itera
     derivatives ``Derivative(q(t), t)`` / ``(t, 2)``; other names are plain symbols, checked
     against ``known_names`` when it is given.  Errors are ``TextAnswerError`` for the student.
     """
-    from lagrade.answers.text import TextAnswerError
+    from lagrade.notation import TextAnswerError
 
     try:
         pieces = split_items(strip_delimiters(text))
@@ -812,8 +816,6 @@ def _sympy_parse(text: str) -> Any:
         from sympy.parsing.latex.errors import LaTeXParsingError
     except ImportError as exc:  # pragma: no cover - the dependency is declared
         raise LatexAnswerError(f"LaTeX answers need sympy's LaTeX parser: {exc}") from None
-    from lagrade.answers import latex_subset  # it reads this module's names: imported once this one is
-
     tree = latex_subset.read(text, _NUMBERS_READ)  # sympy's converter is imported only if this declines
     if tree is not None:
         return tree

@@ -22,7 +22,11 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.answers.latex import GREEK
+#: the Greek letters LaTeX answers may use (:mod:`lagrade.answers.latex` reads them too)
+GREEK = set(
+    "alpha beta gamma delta epsilon varepsilon zeta eta theta vartheta iota kappa varkappa lambda mu nu xi "
+    "pi varpi rho varrho sigma varsigma tau upsilon phi varphi chi psi omega "
+    "Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega".split())
 
 #: sympy's ``func_normal`` commands, read by ``_function`` as sympy's ``convert_func`` reads them
 _FUNCTIONS = frozenset("exp log lg ln sin cos tan csc sec cot arcsin arccos arctan arccsc arcsec arccot "

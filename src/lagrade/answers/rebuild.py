@@ -12,32 +12,40 @@ Integer(10)))`` fails fast instead of hanging the grader.
 from __future__ import annotations
 
 import ast
-import math
 import re
 from collections.abc import Iterator
 from contextlib import contextmanager
 from typing import Any, Literal
 
 import sympy as sp
-from pydantic import BaseModel, ConfigDict, StrictBool, StrictFloat, StrictInt, StrictStr, model_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    StrictBool,
+    StrictFloat,
+    StrictInt,
+    StrictStr,
+    model_validator,
+)
 from sympy.core.assumptions import _assume_defined
 from sympy.core.function import AppliedUndef, UndefinedFunction
 
-MAX_TEXT_CHARS = 1_000_000
-MAX_NODES = 300_000
-MAX_DEPTH = 100
-MAX_INT_ABS = 10**60
-MAX_TOTAL_INT_DIGITS = 200_000
-MAX_POWER_DIGITS = 10_000
-MAX_NAME_CHARS = 64
-MAX_FLOAT_PRECISION = 10_000
-MAX_DERIVATIVE_ORDER = 100
+from lagrade.notation import (  # the limits on any untrusted math text, shared with the notation reader
+    MAX_DEPTH,
+    MAX_DERIVATIVE_ORDER,
+    MAX_FLOAT_PRECISION,
+    MAX_NODES,
+    MAX_TOTAL_INT_DIGITS,
+    RebuildError,
+    check_int,
+    check_name,
+    check_power,
+    parse_limited,
+)
 
 _FLOAT_TEXT = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d{1,5})?$|^[+-]?(inf|nan)$", re.I)
 
 
-class RebuildError(ValueError):
-    """The text is not a safe, well-formed sympy ``srepr`` (or is too large to rebuild)."""
 
 
 class EncodedValue(BaseModel):
@@ -98,89 +106,6 @@ def _decode(v: EncodedValue, depth: int) -> Any:
         except TypeError as exc:
             raise RebuildError(f"unusable dict key: {exc}") from None
     return out
-
-
-# --------------------------------------------------------------------------- limits shared with text.py
-
-def check_int(value: int) -> None:
-    """Refuse integers beyond the size any mechanics answer needs."""
-    if abs(value) > MAX_INT_ABS:
-        raise RebuildError("integer too large (more than 60 digits)")
-
-
-def check_power(base: Any, exp: Any) -> None:
-    """Refuse exact numeric powers whose result would be huge, before sympy computes them."""
-    if not (isinstance(exp, sp.Rational) or isinstance(exp, int)):
-        return  # symbolic or Float exponent: sympy leaves it alone or uses floating point
-    exp = sp.Rational(exp)
-    if isinstance(base, int):
-        base = sp.Integer(base)
-    if not isinstance(base, sp.Basic) or not base.is_number or isinstance(base, sp.Float):
-        return
-    if abs(exp.q) > MAX_POWER_DIGITS:
-        raise RebuildError("exponent denominator too large")
-    if isinstance(base, sp.Rational):
-        size = max(abs(base.p), abs(base.q))
-        if size <= 1:
-            return
-        digits = abs(exp.p) * (size.bit_length() * math.log10(2))
-        if digits > MAX_POWER_DIGITS:
-            raise RebuildError(f"number too large: a power with about {digits:.3g} digits")
-    elif abs(exp.p) > MAX_POWER_DIGITS:  # e.g. (1 + I)**n is expanded exactly by sympy
-        raise RebuildError("exponent too large for an exact numeric power")
-
-
-def check_name(name: Any, what: str = "name") -> str:
-    """Symbol and function names must be short identifiers."""
-    if not isinstance(name, str) or not name.isidentifier() or len(name) > MAX_NAME_CHARS:
-        raise RebuildError(f"invalid {what} {str(name)[:80]!r}: must be an identifier of at most "
-                           f"{MAX_NAME_CHARS} characters")
-    return name
-
-
-def parse_limited(text: str, what: str = "expression") -> ast.AST:
-    """``ast.parse(text, mode="eval")`` with size, nesting and node-count limits."""
-    if not isinstance(text, str):
-        raise RebuildError(f"{what} must be text")
-    if len(text) > MAX_TEXT_CHARS:
-        raise RebuildError(f"{what} too long ({len(text)} characters, limit {MAX_TEXT_CHARS})")
-    _check_bracket_depth(text, what)
-    try:
-        tree = ast.parse(text, mode="eval")
-    except SyntaxError as exc:
-        raise RebuildError(f"{what} is not well formed: {exc.msg}") from None
-    except (ValueError, RecursionError, MemoryError) as exc:
-        raise RebuildError(f"{what} cannot be parsed: {type(exc).__name__}: {exc}") from None
-    count = 0
-    digits = 0
-    for node in ast.walk(tree):
-        count += 1
-        if count > MAX_NODES:
-            raise RebuildError(f"{what} too large (more than {MAX_NODES} syntax nodes)")
-        if isinstance(node, ast.Constant) and isinstance(node.value, int) and not isinstance(node.value, bool):
-            check_int(node.value)
-            digits += len(str(abs(node.value)))
-            if digits > MAX_TOTAL_INT_DIGITS:
-                raise RebuildError(f"{what} contains too many digits")
-    return tree
-
-
-def _check_bracket_depth(text: str, what: str) -> None:
-    """Bound nesting before ``ast.parse`` so deep input fails with our message, not the parser's."""
-    depth = 0
-    quote = ""
-    for ch in text:
-        if quote:
-            if ch == quote:
-                quote = ""
-        elif ch in "'\"":
-            quote = ch
-        elif ch in "([{":
-            depth += 1
-            if depth > MAX_DEPTH:
-                raise RebuildError(f"{what} nested too deeply (more than {MAX_DEPTH} levels)")
-        elif ch in ")]}":
-            depth -= 1
 
 
 # --------------------------------------------------------------------------- srepr constructors

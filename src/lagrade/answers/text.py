@@ -1,17 +1,7 @@
 """Plain-text answers (``answer.toml``) for students who do not write Python.
 
-The text is read with ``ast`` and only arithmetic, a few functions and literals are interpreted;
-nothing is ``eval``-ed or ``sympify``-ed.  Conventions, chosen to fit mechanics notation:
-
-* ``t`` is time; ``pi`` is the constant pi.  ``e``, ``E`` and ``I`` are *ordinary symbols*
-  (energies, moments of inertia...); write ``exp(1)`` for Euler's number.
-* ``^`` means power, like ``**``; integer division gives exact rationals (``1/2``).
-* A coordinate ``q`` (one of ``coordinates``) stands for ``q(t)``; ``q(t)`` is the same.
-  ``q_d``, ``q_dot``, ``qdot`` are its first time derivative, ``q_dd``, ``q_ddot``, ``qddot``
-  its second.  ``Derivative(q, t)``, ``Derivative(q(t), (t, 2))`` and ``diff(q, t, 2)`` work too.
-* ``a == b`` is the equation ``Eq(a, b)`` (at top level, in a list, or as a dict value).
-* Any other name is a plain symbol (parameters, momenta like ``p_theta``).  When
-  ``known_names`` is given, unknown names are errors with a "did you mean" hint.
+Each value is read in the notation of problem files (:mod:`lagrade.notation`: ``q_d``, ``q_dd``, ``^``,
+``==``; nothing is evaluated), and a bad part is a problem for the student while the others load.
 
 In ``answer.toml`` a string value (or list item, or dict value) is read as **LaTeX** instead when
 it contains a control sequence (a backslash followed by a letter: ``\\frac``, ``\\dot``,
@@ -22,9 +12,6 @@ Plain text never contains a backslash, so nothing written for ``parse_math`` cha
 
 from __future__ import annotations
 
-import ast
-import difflib
-from functools import lru_cache
 import re
 import tomllib
 from collections.abc import Iterable, Sequence
@@ -33,221 +20,9 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.answers.rebuild import MAX_DERIVATIVE_ORDER, RebuildError, check_int, check_name, check_power, parse_limited
 from lagrade.answers.screen import AnswerProblem
+from lagrade.notation import TextAnswerError, parse_math  # noqa: F401  (re-exported: answers read with it)
 
-MAX_DEPTH = 100
-
-T = sp.Symbol("t")
-
-_FUNCTIONS: dict[str, Any] = {
-    name: getattr(sp, name)
-    for name in ("sin cos tan cot sec csc asin acos atan acot atan2 sinh cosh tanh coth asinh "
-                 "acosh atanh exp log sqrt cbrt Abs sign").split()
-}
-_SPECIAL_FUNCTIONS = {"Derivative", "diff", "Eq", "Rational"}
-_FIRST = ("_d", "_dot", "dot")
-_SECOND = ("_dd", "_ddot", "ddot")
-
-
-class TextAnswerError(ValueError):
-    """A plain-text answer could not be read; the message is meant for the student."""
-
-
-def parse_math(text: str, coordinates: Sequence[str], known_names: Iterable[str] | None = None) -> Any:
-    """Parse one plain-text answer into a sympy object (or list/dict/bool of them)."""
-    if isinstance(text, str):
-        text = text.replace("^", "**")  # token-level, so x^2 + 1 keeps the precedence of **
-    try:
-        tree = parse_limited(text, "answer")
-    except RebuildError as exc:
-        raise TextAnswerError(str(exc)) from None
-    try:
-        return _Reader(coordinates, known_names).top(tree.body)  # type: ignore[attr-defined]
-    except (TextAnswerError, RecursionError) as exc:
-        if isinstance(exc, RecursionError):
-            raise TextAnswerError("the answer is nested too deeply") from None
-        raise
-    except RebuildError as exc:
-        raise TextAnswerError(str(exc)) from None
-    except (TypeError, ValueError, ZeroDivisionError, OverflowError, sp.SympifyError) as exc:
-        raise TextAnswerError(f"cannot interpret the answer: {str(exc)[:200]}") from None
-
-
-@lru_cache(maxsize=256)
-def _coordinate(name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
-    """q(t), q'(t), q''(t): built once per name (sympy's diff costs about half a millisecond)."""
-    q = sp.Function(name)(T)
-    return q, q.diff(T), q.diff(T, 2)
-
-
-class _Reader:
-    def __init__(self, coordinates: Sequence[str], known_names: Iterable[str] | None) -> None:
-        self.coords = {check_name(c, "coordinate name"): _coordinate(c)[0] for c in coordinates}
-        self.known = None if known_names is None else set(known_names)
-        self.shorthand: dict[str, sp.Expr] = {}
-        for name in self.coords:
-            _, velocity, acceleration = _coordinate(name)
-            for suffix in _FIRST:
-                self.shorthand[name + suffix] = velocity
-            for suffix in _SECOND:
-                self.shorthand[name + suffix] = acceleration
-
-    # containers and equations ------------------------------------------------------
-    def top(self, node: ast.AST) -> Any:
-        if isinstance(node, ast.List):
-            return [self.item(e) for e in node.elts]
-        if isinstance(node, ast.Dict):
-            out = {}
-            for k, v in zip(node.keys, node.values):
-                if k is None:
-                    raise TextAnswerError("'**' is not allowed in a dict")
-                key = k.value if isinstance(k, ast.Constant) and isinstance(k.value, str) else self.expr(k, 1)
-                out[key] = self.item(v)
-            return out
-        return self.item(node)
-
-    def item(self, node: ast.AST) -> Any:
-        if isinstance(node, ast.Constant) and isinstance(node.value, bool):
-            return node.value
-        if isinstance(node, ast.Compare):
-            if len(node.ops) != 1 or not isinstance(node.ops[0], ast.Eq):
-                raise TextAnswerError("only single equations 'a == b' are allowed, not <, > or chains")
-            return sp.Eq(self.expr(node.left, 1), self.expr(node.comparators[0], 1))
-        return self.expr(node, 1)
-
-    # expressions ------------------------------------------------------------------
-    def expr(self, node: ast.AST, depth: int) -> Any:
-        if depth > MAX_DEPTH:
-            raise TextAnswerError("the answer is nested too deeply")
-        d = depth + 1
-        if isinstance(node, ast.Constant):
-            value = node.value
-            if isinstance(value, bool):
-                raise TextAnswerError("True/False cannot be used inside a formula")
-            if isinstance(value, int):
-                check_int(value)
-                return sp.Integer(value)
-            if isinstance(value, float):
-                return sp.Float(repr(value))
-            raise TextAnswerError(f"unexpected literal {value!r:.40} in a formula")
-        if isinstance(node, ast.Name):
-            return self.name(node.id)
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
-            value = self.expr(node.operand, d)
-            return -value if isinstance(node.op, ast.USub) else value
-        if isinstance(node, ast.BinOp):
-            left, right = self.expr(node.left, d), self.expr(node.right, d)
-            op = node.op
-            if isinstance(op, ast.Add):
-                return left + right
-            if isinstance(op, ast.Sub):
-                return left - right
-            if isinstance(op, ast.Mult):
-                return left * right
-            if isinstance(op, ast.Div):
-                return left / right
-            if isinstance(op, (ast.Pow, ast.BitXor)):
-                check_power(left, right)
-                return left**right
-            raise TextAnswerError(f"operator {ast.unparse(node)[:40]!r} is not supported; use + - * / ** or ^")
-        if isinstance(node, ast.Call):
-            return self.call(node, d)
-        if isinstance(node, ast.Compare):
-            raise TextAnswerError("'==' may only be used for a whole equation, not inside a formula")
-        if isinstance(node, ast.Attribute):
-            raise TextAnswerError("attribute access (x.y) is not allowed in a text answer")
-        if isinstance(node, ast.Lambda):
-            raise TextAnswerError("lambda is not allowed in a text answer")
-        if isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
-            raise TextAnswerError("comprehensions are not allowed in a text answer")
-        raise TextAnswerError(f"'{ast.unparse(node)[:40]}' is not a supported formula")
-
-    def name(self, name: str) -> Any:
-        if name.startswith("__"):
-            raise TextAnswerError(f"names with double underscores like '{name}' are not allowed")
-        check_name(name)
-        if name == "t":
-            return T
-        if name == "pi":
-            return sp.pi
-        if name in self.coords:
-            return self.coords[name]
-        if name in self.shorthand:
-            return self.shorthand[name]
-        if name in _FUNCTIONS or name in _SPECIAL_FUNCTIONS:
-            raise TextAnswerError(f"'{name}' is a function; write {name}(...)")
-        if self.known is not None and name not in self.known:
-            raise TextAnswerError(f"unknown name '{name}'{self._hint(name, self._all_names())}")
-        return sp.Symbol(name)
-
-    def _all_names(self) -> list[str]:
-        return sorted({"t", "pi", *self.coords, *self.shorthand, *(self.known or ())})
-
-    @staticmethod
-    def _hint(name: str, candidates: Iterable[str]) -> str:
-        close = difflib.get_close_matches(name, list(candidates), n=1)
-        return f" (did you mean '{close[0]}'?)" if close else ""
-
-    def call(self, node: ast.Call, depth: int) -> Any:
-        if not isinstance(node.func, ast.Name):
-            if isinstance(node.func, ast.Attribute):
-                raise TextAnswerError("attribute access (x.y) is not allowed in a text answer")
-            raise TextAnswerError("only named functions like sin(x) can be called")
-        fname = node.func.id
-        if node.keywords or any(isinstance(a, ast.Starred) for a in node.args):
-            raise TextAnswerError(f"{fname}() takes plain arguments only")
-        if fname in self.coords:
-            if len(node.args) != 1:
-                raise TextAnswerError(f"coordinate {fname} takes one argument, e.g. {fname}(t)")
-            arg = self.expr(node.args[0], depth)
-            return self.coords[fname] if arg == T else sp.Function(fname)(arg)
-        if fname in ("Derivative", "diff"):
-            return self.derivative(fname, node.args, depth)
-        if fname == "Rational":
-            args = [self.expr(a, depth) for a in node.args]
-            if len(args) != 2 or not all(isinstance(a, sp.Integer) for a in args) or args[1] == 0:
-                raise TextAnswerError("Rational(p, q) needs two integers, q not zero")
-            return sp.Rational(int(args[0]), int(args[1]))
-        if fname == "Eq":
-            if len(node.args) != 2:
-                raise TextAnswerError("Eq(a, b) takes two arguments")
-            return sp.Eq(self.expr(node.args[0], depth), self.expr(node.args[1], depth))
-        if fname in _FUNCTIONS:
-            args = [self.expr(a, depth) for a in node.args]
-            try:
-                return _FUNCTIONS[fname](*args)
-            except TypeError:
-                raise TextAnswerError(f"wrong number of arguments for {fname}()") from None
-        known = [*_FUNCTIONS, *_SPECIAL_FUNCTIONS, *self.coords]
-        raise TextAnswerError(f"unknown function '{fname}'{self._hint(fname, known)}")
-
-    def derivative(self, fname: str, args: list[ast.AST], depth: int) -> Any:
-        if len(args) < 2:
-            raise TextAnswerError(f"{fname}(expression, t) needs a variable")
-        expr = self.expr(args[0], depth)
-        spec: list[Any] = []
-        for a in args[1:]:
-            if isinstance(a, ast.Tuple):
-                if len(a.elts) != 2:
-                    raise TextAnswerError("write (t, 2) for a second derivative")
-                var, order = (self.expr(e, depth) for e in a.elts)
-                spec.append((var, order))
-            else:
-                spec.append(self.expr(a, depth))
-        orders = [o for item in spec for o in (item[1:] if isinstance(item, tuple) else [item])
-                  if isinstance(o, sp.Integer)]
-        for o in orders:
-            if not 0 <= int(o) <= MAX_DERIVATIVE_ORDER:
-                raise TextAnswerError(f"derivative order {o} out of range")
-        for item in spec:
-            var = item[0] if isinstance(item, tuple) else item
-            if not isinstance(var, (sp.Symbol, sp.Integer)):
-                raise TextAnswerError("differentiate with respect to a symbol such as t")
-        return sp.diff(expr, *spec)
-
-
-# --------------------------------------------------------------------------- answer.toml
 
 def load_toml_answer(path: Path, coordinates: Sequence[str],
                      known_names: Iterable[str] | None) -> tuple[dict[str, object], list[AnswerProblem]]:
@@ -305,12 +80,21 @@ def _looks_latex(text: str) -> bool:
 
 
 def _parse_text(text: str, coordinates: Sequence[str], known: list[str] | None) -> Any:
-    """One TOML string: LaTeX (a ``\\command`` or ``$...$``) or plain text."""
+    """One TOML string: LaTeX (a ``\\command`` or ``$...$``) or plain text. Text that is not well
+    formed as plain text but reads as LaTeX is LaTeX (``x_0 + v_{x0} t``, with no backslash)."""
     from lagrade.answers.latex import is_latex, parse_latex_answer
 
     if is_latex(text):
         return parse_latex_answer(text, coordinates, known)
-    return parse_math(text, coordinates, known)
+    try:
+        return parse_math(text, coordinates, known)
+    except TextAnswerError as plain:
+        if "not well formed" not in str(plain):
+            raise
+        try:
+            return parse_latex_answer(text, coordinates, known)
+        except TextAnswerError:
+            raise plain from None
 
 
 def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
@@ -320,6 +104,8 @@ def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
     if isinstance(raw, float):
         return sp.Float(repr(raw))
     if isinstance(raw, str):
+        if raw.strip().lower() in _YES_NO and raw.strip() not in (known or ()):
+            return _YES_NO[raw.strip().lower()]
         return _parse_text(raw, coordinates, known)
     if isinstance(raw, list):
         out = []
@@ -346,6 +132,10 @@ def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
                 raise TextAnswerError(sub_line, f"{sub}: {exc}") from None
         return out_d
     raise TextAnswerError(f"unsupported value of type {type(raw).__name__}")
+
+
+#: yes/no parts written in words: ``H_conserved = "no"`` (TOML's own true/false are booleans already)
+_YES_NO = {"yes": True, "no": False, "true": True, "false": False}
 
 
 def _key_line(lines: list[str], key: str, start: int = 0) -> int | None:

@@ -1,0 +1,146 @@
+"""``lagrade serve``, ``lagrade tokens`` and the client side of ``lagrade check --server``.
+
+Module-level click commands, registered on the main group by ``lagrade.cli``; the server's
+dependencies (``pip install 'lagrade[server]'``) are imported only when a server command runs.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+from pathlib import Path
+
+import click
+
+problems_option = click.option("--problems", "problems_dir", multiple=True, type=click.Path(path_type=Path),
+                               help="Extra folder of problem files (also LAGRADE_PROBLEMS).")
+
+
+def _need_server_extra() -> None:
+    try:
+        import fastapi  # noqa: F401
+        import sqlalchemy  # noqa: F401
+        import uvicorn  # noqa: F401
+    except ImportError as exc:
+        raise click.ClickException(f"the server needs its extra: pip install 'lagrade[server]' ({exc.name} is missing)")
+
+
+def _roster(path: Path | None) -> tuple[str, ...] | None:
+    if path is None:
+        return None
+    from lagrade.server.tokens import RosterError, read_roster
+
+    try:
+        return read_roster(path)
+    except RosterError as exc:
+        raise click.UsageError(str(exc)) from None
+
+
+@click.command("serve")
+@click.option("--assignment", "-a", "assignment_path", required=True,
+              type=click.Path(exists=True, dir_okay=False, path_type=Path), help="The assignment TOML file.")
+@click.option("--db", help="SQLite file (default: <assignment>-serve.sqlite) or a URL postgresql+psycopg://...")
+@click.option("--roster", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="CSV of the students who may sign in (a 'student' column); default: any token issued for this db.")
+@click.option("--host", default="127.0.0.1", show_default=True)
+@click.option("--port", default=8000, show_default=True, type=click.IntRange(0, 65535))
+@click.option("--open", "open_", is_flag=True, help="No tokens: anyone who reaches the server may check (a lecture demo).")
+@click.option("--workers", "-j", type=click.IntRange(min=1), default=2, show_default=True, help="Warm grader processes.")
+@click.option("--scheduler", help="Grade on an existing Dask cluster instead (tcp://host:8786; needs lagrade[dask]).")
+@click.option("--unsafe-trusted-files", is_flag=True,
+              help="Serve even where the OS jail cannot be built (see `lagrade doctor`): never for students.")
+@problems_option
+def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str, port: int, open_: bool,
+          workers: int, scheduler: str | None, unsafe_trusted_files: bool, problems_dir: tuple[Path, ...]) -> None:
+    """Serve the assignment: students check answers on a web page or with `lagrade check --server`."""
+    _need_server_extra()
+    import uvicorn
+    from rich.console import Console
+
+    from lagrade.cli_bulk import _require_jail
+    from lagrade.server.app import create_app
+    from lagrade.server.config import ServerConfig
+    from lagrade.server.tokens import INSTRUCTOR, issue
+
+    err = Console(stderr=True, highlight=False)
+    _require_jail(unsafe_trusted_files, err)
+    db = db or str(assignment_path.with_name(assignment_path.stem + "-serve.sqlite"))
+    config = ServerConfig(assignment=assignment_path, db=db, roster=_roster(roster), open=open_,
+                          problems_dirs=problems_dir, workers=workers, scheduler=scheduler)
+    try:
+        app = create_app(config)
+    except ValueError as exc:
+        raise click.UsageError(str(exc)) from None
+    except Exception as exc:  # noqa: BLE001  (a database that cannot be opened: one line)
+        raise click.ClickException(f"{db}: cannot be used as the server's database ({type(exc).__name__}: "
+                                   f"{' '.join(str(exc).split())[:300]})") from None
+    token = issue(app.state.server.secret, INSTRUCTOR)
+    shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
+    err.print(f"lagrade serve: {len(config.roster or ())} students on the roster, "
+              f"{'open (no tokens)' if open_ else 'tokens required'}, database {db}")
+    err.print(f"class page: http://{shown}:{port}/login?token={token}", soft_wrap=True)
+    uvicorn.run(app, host=host, port=port, log_level="warning", timeout_graceful_shutdown=10)
+
+
+@click.command("tokens")
+@click.argument("roster", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option("--db", required=True, help="The server's database (the one `lagrade serve --db` uses).")
+@click.option("--url", help="The server's address, to print a sign-in link per student (http://host:8000).")
+def tokens(roster: Path, db: str, url: str | None) -> None:
+    """One token per student of ROSTER (CSV on stdout: student,token[,link]); the last row is the instructor's."""
+    _need_server_extra()
+    from lagrade.server.db import Database
+    from lagrade.server.tokens import INSTRUCTOR, issue
+
+    names = _roster(roster)
+    try:
+        database = Database(db)
+        secret = database.secret()
+        database.close()
+    except Exception as exc:  # noqa: BLE001
+        raise click.ClickException(f"{db}: cannot be used as the server's database ({' '.join(str(exc).split())[:300]})")
+    out = io.StringIO()
+    w = csv.writer(out)
+    w.writerow(["student", "token"] + (["link"] if url else []))
+    for name in (*names, INSTRUCTOR):
+        token = issue(secret, name)
+        w.writerow([name, token] + ([f"{url.rstrip('/')}/login?token={token}"] if url else []))
+    click.echo(out.getvalue(), nl=False)
+
+
+def check_on_server(server: str, token: str | None, problem_id: str, answer: Path, as_json: bool) -> int:
+    """The body of ``lagrade check --server``: the exit code of a local check (0, 1, or 2)."""
+    import json
+
+    from lagrade.server.client import ClientError, remote_check, result_of
+
+    ctx = click.get_current_context(silent=True)
+    params = ctx.params if ctx is not None else {}
+    local_only = [f"--{name.replace('_', '-')}" for name in ("only", "hints", "credit_file", "plot_file", "grading_seconds")
+                  if params.get(name)] + (["--accuracy"] if params.get("accuracy", "default") != "default" else [])
+    if local_only and not as_json:  # the server grades as its assignment says
+        click.echo(f"lagrade: ignored with --server: {', '.join(local_only)}".replace("--only", "--part")
+                   .replace("--credit-file", "--credit").replace("--plot-file", "--plot"), err=True)
+    try:
+        out = remote_check(server, token, problem_id, answer)
+        result = result_of(out)
+    except (ClientError, ValueError) as exc:
+        message = str(exc).splitlines()[0]
+        if as_json:
+            click.echo(json.dumps({"error": message}))
+        else:
+            click.echo(f"lagrade: {message}", err=True)
+        return 2
+    if as_json:
+        click.echo(json.dumps({**json.loads(result.model_dump_json()), "submission_id": out.get("submission_id")}))
+    else:
+        from rich.console import Console
+
+        from lagrade.result import render
+
+        render(result, Console(highlight=False))
+        click.echo(f"submission {out.get('submission_id')} on {server}", err=True)
+    if out.get("outcome") == "failed":
+        return 2
+    return 0 if result.full_marks else 1
+
