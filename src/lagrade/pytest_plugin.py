@@ -1,16 +1,18 @@
 """A pytest plugin: problem files and answer files are test items.
 
 Instructors test their problems the way this repository tests its own: ``pytest problems
-reference_solutions tests/answers`` collects
+reference_solutions tests/answers`` collects, in whatever folders it is given (any names):
 
-- every problem file ``problems/<id>.toml``: it loads, and its scene derives;
-- every reference solution ``reference_solutions/<id>/answer.(py|toml)``: it scores full marks;
-- every golden answer ``answers/<id>/<expected>_<what>.(py|toml)``: ``correct_*`` scores full marks,
+- every problem file (a TOML file with an ``id`` and ``[[parts]]``): it loads, and its scene derives;
+- every reference solution ``<id>/answer.(py|toml)``: it scores full marks;
+- every golden answer ``<id>/<expected>_<what>.(py|toml)``: ``correct_*`` scores full marks,
   ``wrong_*`` does not, and a first-line comment ``# expect: L=incorrect, eom=correct`` pins verdicts.
 
-A failure reads like grading feedback (the verdict table), not like a traceback. Problems are
-looked up in the nearest ``problems/`` folder above the answer file, then among the bundled ones.
-Turn the plugin off with ``-p no:lagrade``.
+``<id>`` is the folder's name, and it must be a problem that can be found: among the problem files
+under the paths pytest was given, in the nearest ``problems/`` folder above the answer, in
+``LAGRADE_PROBLEMS``, or among the bundled ones (so a folder that only looks like an id is not
+collected). A failure reads like grading feedback (the verdict table), not like a traceback. Turn
+the plugin off with ``-p no:lagrade``.
 """
 
 from __future__ import annotations
@@ -36,26 +38,54 @@ def _problems_dirs(path: Path) -> tuple[Path, ...]:
 
 
 def _is_problem_file(path: Path) -> bool:
-    if path.suffix != ".toml" or path.parent.name != "problems":
+    if path.suffix != ".toml":
         return False
     head = path.read_text(encoding="utf-8", errors="replace")
     return "[[parts]]" in head and re.search(r"^id\s*=", head, re.MULTILINE) is not None
 
 
-def _answer_kind(path: Path) -> str | None:
-    if path.suffix not in (".py", ".toml") or len(path.parts) < 3:
+_SESSION_PROBLEMS = pytest.StashKey[dict]()
+
+
+def _session_problems(config) -> dict[str, Path]:
+    """Problem files under the paths pytest was given, by id (the file's name is its id)."""
+    if _SESSION_PROBLEMS not in config.stash:
+        found: dict[str, Path] = {}
+        for arg in config.args or [str(config.rootpath)]:
+            root = Path(arg.split("::")[0])
+            files = [root] if root.is_file() else sorted(root.rglob("*.toml")) if root.is_dir() else []
+            for f in files:
+                if _is_problem_file(f):
+                    found.setdefault(f.stem, f.parent)
+        config.stash[_SESSION_PROBLEMS] = found
+    return config.stash[_SESSION_PROBLEMS]
+
+
+def _problem_dirs_for(config, pid: str, path: Path) -> tuple[Path, ...] | None:
+    """Where problem ``pid`` of an answer at ``path`` is found, or None if it is nowhere."""
+    from lagrade.library import problem_ids
+
+    session = _session_problems(config)
+    dirs = ((session[pid],) if pid in session else ()) + _problems_dirs(path)
+    return dirs if pid in problem_ids(dirs) else None
+
+
+def _answer_kind(path: Path, config) -> str | None:
+    if path.suffix not in (".py", ".toml") or len(path.parts) < 2:
         return None
-    if path.parent.parent.name == "reference_solutions" and path.stem == "answer":
-        return "reference"
-    if path.parent.parent.name == "answers" and re.match(r"^(correct|wrong)_", path.stem):
-        return "golden"
-    return None
+    if path.stem == "answer":
+        kind = "reference"
+    elif re.match(r"^(correct|wrong)_", path.stem):
+        kind = "golden"
+    else:
+        return None
+    return kind if _problem_dirs_for(config, path.parent.name, path) is not None else None
 
 
 def pytest_collect_file(file_path: Path, parent):  # noqa: D103
     if _is_problem_file(file_path):
         return ProblemFile.from_parent(parent, path=file_path)
-    kind = _answer_kind(file_path)
+    kind = _answer_kind(file_path, parent.config)
     if kind:
         return AnswerFile.from_parent(parent, path=file_path, kind=kind)
     return None
@@ -122,7 +152,7 @@ class AnswerItem(pytest.Item):
         from lagrade.spec import SpecError
 
         try:
-            problem = load_problem(self.problem_id, _problems_dirs(self.path))
+            problem = load_problem(self.problem_id, _problem_dirs_for(self.config, self.problem_id, self.path) or ())
         except SpecError as exc:
             raise GradingFailure(str(exc)) from None
         result = check(problem, self.path)

@@ -7,14 +7,17 @@ the same no-eval parser that reads students' text answers.
 
 from __future__ import annotations
 
+import json
 import re
 import tomllib
 from pathlib import Path
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Literal, NamedTuple, get_args
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
 IDENT = r"^[A-Za-z][A-Za-z0-9_]*$"
+#: problem ids are free (any course): letters, digits, ".", "_", "-", starting with a letter or digit
+ID = r"^[A-Za-z0-9][A-Za-z0-9._-]{0,63}$"
 
 #: The physical effects a scene may declare (the catalogue's vocabulary).
 Effect = Literal[
@@ -37,21 +40,57 @@ Effect = Literal[
     "small_oscillation_linearization",
 ]
 
+class Kind(NamedTuple):
+    """One kind of part: what the student gives, when it is correct, what the problem file holds."""
+
+    expects: str                 #: shown by ``lagrade show`` and ``lagrade template``
+    correct_when: str
+    reference: str
+    needs_reference: bool = True
+
+
+#: Every kind of part. This one table drives validation (:data:`PartKind`), ``lagrade show`` and
+#: ``template``, and the table of docs/authoring-problems.md; the checkers register one function per
+#: kind, and a test holds their registry to this table.
+KINDS: dict[str, Kind] = {
+    "lagrangian": Kind(
+        "expression in the coordinates q(t), their velocities q(t).diff(t), parameters and t",
+        "its Euler-Lagrange equations equal the scene's (L + dF/dt ok; c*L half credit)",
+        "derived from the scene", needs_reference=False),
+    "eom": Kind(
+        "list of Eq(lhs, rhs) (or expressions meaning = 0), one per coordinate",
+        "they define the scene's accelerations; `linearized = true`: their linearization about "
+        "`equilibrium` does", "derived", needs_reference=False),
+    "hamiltonian": Kind(
+        "expression in the coordinates and momenta p_<q> (symbols or functions of t)",
+        "H - H_ref depends on t only", "derived (Legendre transform of the scene's L)", needs_reference=False),
+    "hamilton_eqs": Kind(
+        "list of 2n equations in Derivative(q(t), t) and Derivative(p_q(t), t)",
+        "they define the scene's rates", "derived", needs_reference=False),
+    "expression": Kind(
+        "expression in the parameters (and the state where it depends on it)",
+        "equal at random points (params, state)",
+        "text, or a table of texts keyed by name; may use derived `q_dd`, multipliers (`lam`), "
+        "momenta `p_q`, `delta_q` (virtual displacements)"),
+    "expression_set": Kind("list of expressions, in any order", "same multiset of values", "list of texts"),
+    "equation_root": Kind(
+        "the value, or an equation it satisfies (e.g. Eq(cos(theta), 2/3))",
+        "the reference value satisfies the equation (and it is not an identity)", 'text; `unknown = "theta"`'),
+    "boolean": Kind("True or False", "equal", "`true` / `false`"),
+    "integer": Kind("a whole number", "equal", "int"),
+    "names": Kind("list of coordinate names (strings) or coordinates", "same set", "list of names"),
+    "conserved": Kind(
+        "list of expressions constant along the motion (momenta may be written p_<q>)",
+        "each is conserved along the scene's motion, and together they cover the reference quantities "
+        "(functional dependence)", "list of texts"),
+    "trajectory": Kind(
+        "dict coordinate name -> expression in t",
+        "satisfies the scene's equations of motion and the `initial` values",
+        'none; `initial = { theta = "theta0", theta_d = "0" }`', needs_reference=False),
+}
+
 #: How a part is graded. Dynamics kinds are compared by their equations of motion.
-PartKind = Literal[
-    "lagrangian",
-    "eom",
-    "hamiltonian",
-    "hamilton_eqs",
-    "expression",
-    "expression_set",
-    "equation_root",
-    "boolean",
-    "integer",
-    "names",
-    "conserved",
-    "trajectory",
-]
+PartKind = Literal[tuple(KINDS)]  # type: ignore[valid-type]
 
 DYNAMICS_KINDS = ("lagrangian", "eom", "hamiltonian", "hamilton_eqs")
 
@@ -72,10 +111,11 @@ class _Strict(BaseModel):
 class Coordinate(_Strict):
     """A generalized coordinate, with the ranges its random states are drawn from."""
 
-    name: Annotated[str, Field(pattern=IDENT)]
-    description: str = ""
-    sample: tuple[float, float] = (-1.0, 1.0)
-    velocity: tuple[float, float] = (-1.0, 1.0)
+    name: Annotated[str, Field(pattern=IDENT, description="the coordinate's name; a function of t in answers")]
+    description: str = Field("", description="what it measures, as `lagrade show` prints it")
+    sample: tuple[float, float] = Field((-1.0, 1.0), description="range of random states [low, high]: keep away "
+                                        "from singularities and inside the region where the model holds")
+    velocity: tuple[float, float] = Field((-1.0, 1.0), description="range of random velocities [low, high]")
 
     @field_validator("sample", "velocity")
     @classmethod
@@ -88,10 +128,10 @@ class Coordinate(_Strict):
 class Parameter(_Strict):
     """A parameter of the problem; positivity is an assumption students may rely on."""
 
-    name: Annotated[str, Field(pattern=IDENT)]
-    description: str = ""
-    positive: bool = True
-    sample: tuple[float, float] = (0.5, 2.0)
+    name: Annotated[str, Field(pattern=IDENT, description="the symbol's name; answers match it by name")]
+    description: str = Field("", description="what it is, as `lagrade show` prints it")
+    positive: bool = Field(True, description="students may rely on it being > 0; `sample` must then be > 0")
+    sample: tuple[float, float] = Field((0.5, 2.0), description="range random values are drawn from [low, high]")
 
     @model_validator(mode="after")
     def _range_fits(self) -> Parameter:
@@ -110,29 +150,29 @@ class Constraint(_Strict):
     Lagrangian by substitution and still recover the multiplier (the constraint force) when asked.
     """
 
-    coordinate: str
-    value: str
-    multiplier: Annotated[str, Field(pattern=IDENT)] | None = None
+    coordinate: str = Field(description="the coordinate the constraint is solved for")
+    value: str = Field(description="its value: an expression in the other coordinates and t (`R`, `a*psi`, `omega*t`)")
+    multiplier: Annotated[str, Field(pattern=IDENT)] | None = Field(
+        None, description="name of the multiplier (the constraint force), usable in references")
 
 
 class System(_Strict):
     """One physical system (a scene). Lettered sub-problems and alternative coordinates are systems."""
 
-    key: str = ""
-    title: str = ""
-    #: parameters of this system only (added to the problem's): lettered systems may reuse a name
-    #: that is a coordinate in another system (12.8: theta is (a)'s incline angle, (b)'s coordinate)
-    parameters: list[Parameter] = []
-    coordinates: list[Coordinate]
-    effects: list[Effect] = []
-    L: str | None = None
-    T: str | None = None
-    V: str | None = None
-    Q: dict[str, str] = {}
-    constraints: list[Constraint] = []
-    equilibrium: dict[str, str] = {}
-    horizon: float = 2.0
-    momenta: dict[str, str] = {}
+    key: str = Field("", description='"" for the only system; "a", "b", ... for lettered sub-problems')
+    title: str = Field("", description="the sub-problem's title")
+    #: lettered systems may reuse a name that is a coordinate in another system (12.8: theta is
+    #: (a)'s incline angle, (b)'s coordinate)
+    parameters: list[Parameter] = Field([], description="parameters of this system only (added to the problem's)")
+    coordinates: list[Coordinate] = Field(description="the generalized coordinates")
+    effects: list[Effect] = Field([], description="every physical effect the scene involves (the vocabulary below)")
+    L: str | None = Field(None, description="the Lagrangian (or give T and V)")
+    T: str | None = Field(None, description="the kinetic energy")
+    V: str | None = Field(None, description="the potential energy")
+    Q: dict[str, str] = Field({}, description="generalized (non-conservative) forces, keyed by coordinate")
+    constraints: list[Constraint] = Field([], description="holonomic constraints, each solved for one coordinate")
+    equilibrium: dict[str, str] = Field({}, description="the equilibrium linearized parts expand about")
+    horizon: float = Field(2.0, description="time window of trajectory comparisons (and of sampled t)")
 
     @model_validator(mode="after")
     def _scene_is_complete(self) -> System:
@@ -163,34 +203,37 @@ class System(_Strict):
 class Mistake(_Strict):
     """A known wrong answer and the sentence that explains it to the student."""
 
-    answer: Any
-    message: str
+    answer: Any = Field(description="the wrong answer, in the notation of references")
+    message: str = Field(description="the sentence a student with this answer reads: name the physics, "
+                                     "never a reference value")
 
 
 class Part(_Strict):
     """One thing the problem asks, bound to one name in the answer file."""
 
-    name: Annotated[str, Field(pattern=IDENT)]
-    kind: PartKind
-    prompt: str = ""
-    system: str = ""
-    weight: float = Field(default=1.0, gt=0)
-    reference: Any = None
-    #: eom: grade the equations linearized about the system's equilibrium.
-    linearized: bool = False
-    #: equation_root: the unknown the student's equation is solved for (e.g. ``theta``).
-    unknown: str | None = None
-    #: extra symbols the answer may use (initial values like ``theta0``).
-    symbols: list[str] = []
-    #: trajectory: initial values, keyed ``q`` and ``q_d``.
-    initial: dict[str, str] = {}
-    aliases: list[str] = []
-    mistakes: list[Mistake] = []
+    name: Annotated[str, Field(pattern=IDENT, description="the name the answer binds (the catalogue's contract)")]
+    kind: PartKind = Field(description="how it is graded (the table of kinds below)")
+    prompt: str = Field("", description="what the part asks, as `lagrade show` prints it")
+    system: str = Field("", description="key of the system it is about")
+    weight: float = Field(default=1.0, gt=0, description="points, relative to the other parts")
+    reference: Any = Field(None, description="the right answer where the scene does not derive it (by kind)")
+    linearized: bool = Field(False, description="eom: grade the equations linearized about the equilibrium")
+    unknown: str | None = Field(None, description="equation_root: the unknown the equation is solved for")
+    domain: tuple[float, float] | None = Field(
+        None, description="equation_root: the interval the unknown lives in (e.g. [0, 3.14159...] for an angle "
+                          "from the vertical); an equation with another solution in it does not single out the answer")
+    symbols: list[str] = Field([], description="extra symbols an answer may use (initial values like theta0), "
+                                                 "sampled in [0.5, 1.5]")
+    symbol_ranges: dict[str, tuple[float, float]] = Field(
+        {}, description="another sampling range for some of `symbols`: an initial position or velocity "
+                        "that may be negative, [-1.5, 1.5]")
+    initial: dict[str, str] = Field({}, description="trajectory: initial values, keyed q and q_d")
+    aliases: list[str] = Field([], description="other names an answer may bind for this part")
+    mistakes: list[Mistake] = Field([], description="known wrong answers, each with its sentence")
 
     @model_validator(mode="after")
     def _reference_present(self) -> Part:
-        needs = {"expression", "expression_set", "equation_root", "boolean", "integer", "names", "conserved"}
-        if self.kind in needs and self.reference is None:
+        if KINDS[self.kind].needs_reference and self.reference is None:
             raise ValueError(f"part '{self.name}' of kind {self.kind} needs a reference")
         if self.kind == "boolean" and not isinstance(self.reference, bool):
             raise ValueError(f"part '{self.name}': a boolean reference must be true or false")
@@ -200,19 +243,32 @@ class Part(_Strict):
             raise ValueError(f"part '{self.name}': equation_root needs 'unknown'")
         if self.kind == "trajectory" and not self.initial:
             raise ValueError(f"part '{self.name}': a trajectory part needs 'initial' values")
+        if self.domain is not None and not self.domain[0] < self.domain[1]:
+            raise ValueError(f"part '{self.name}': domain must be [low, high] with low < high")
+        for name, (lo, hi) in self.symbol_ranges.items():
+            if name not in self.symbols:
+                raise ValueError(f"part '{self.name}': symbol_ranges names '{name}', which is not in symbols")
+            if not lo < hi:
+                raise ValueError(f"part '{self.name}': the range of {name} must be [low, high] with low < high")
         return self
+
+    @property
+    def symbol_domains(self) -> dict[str, tuple[float, float]]:
+        """Each extra symbol with the range it is sampled in."""
+        return {name: self.symbol_ranges.get(name, (0.5, 1.5)) for name in self.symbols}
 
 
 class Problem(_Strict):
     """A problem (or exercise) of the chapter: its systems and the parts it asks."""
 
-    id: Annotated[str, Field(pattern=r"^(ex|eg)?12\.\d+$")]
-    title: str
-    statement: str = ""
-    assumptions: list[str] = []
-    parameters: list[Parameter] = []
-    systems: list[System]
-    parts: list[Part]
+    id: Annotated[str, Field(pattern=ID, description="the problem's id, also its file name: letters, digits, "
+                                                      "`.`, `_`, `-` (`12.22`, `ex12.3`, `hw7-q2`)")]
+    title: str = Field(description="one line")
+    statement: str = Field("", description="the book's statement, paraphrased (`lagrade show` prints it)")
+    assumptions: list[str] = Field([], description="what a student needs where the book's figure is missing")
+    parameters: list[Parameter] = Field([], description="every symbol other than coordinates and t")
+    systems: list[System] = Field(description="one scene, or several for lettered sub-problems")
+    parts: list[Part] = Field(description="what the problem asks, one part per answer name")
 
     @model_validator(mode="after")
     def _consistent(self) -> Problem:
@@ -256,6 +312,52 @@ class Problem(_Strict):
     @property
     def max_score(self) -> float:
         return sum(p.weight for p in self.parts)
+
+
+def _type_name(annotation: Any) -> str:
+    """A field's type in the words of a TOML file (string, list of ..., table of ...)."""
+    import types
+    import typing
+
+    origin, args = typing.get_origin(annotation), typing.get_args(annotation)
+    if origin is Annotated:
+        return _type_name(args[0])
+    if origin in (typing.Union, types.UnionType):
+        named = [_type_name(a) for a in args if a is not type(None)]
+        return " or ".join(named) + (" (optional)" if type(None) in args else "")
+    if origin is list:
+        return f"list of {_type_name(args[0])}"
+    if origin is dict:
+        return f"table of {_type_name(args[1])}"
+    if origin is tuple:
+        return "[low, high]"
+    names = {str: "string", float: "number", bool: "true/false", int: "integer"}
+    if annotation in names:
+        return names[annotation]
+    return "any" if annotation is Any else f"`[{annotation.__name__}]`"
+
+
+def markdown_tables() -> str:
+    """The tables of docs/authoring-problems.md, from the models themselves (a test holds the page
+    to them): every field with its type, default and description, then the kinds of part."""
+
+    def rows(model: type[BaseModel]) -> list[str]:
+        out = [f"`[{model.__name__}]`: {(model.__doc__ or '').strip().splitlines()[0]}", "",
+               "| field | type | default | meaning |", "|---|---|---|---|"]
+        for name, field in model.model_fields.items():
+            kind = {"kind": "a kind below", "effects": "list of effects below"}.get(name) or _type_name(field.annotation)
+            default = ("required" if field.is_required() else "none" if field.default is None
+                       else f"`{json.dumps(field.default)}`")
+            out.append(f"| `{name}` | {kind} | {default} | {field.description or ''} |")
+        return out + [""]
+
+    lines: list[str] = []
+    for model in (Problem, Parameter, System, Coordinate, Constraint, Part, Mistake):
+        lines += rows(model)
+    lines += ["| kind | the student gives | correct when | `reference` |", "|---|---|---|---|"]
+    lines += [f"| `{name}` | {k.expects} | {k.correct_when} | {k.reference} |" for name, k in KINDS.items()]
+    lines += ["", "Effects: " + ", ".join(f"`{e}`" for e in get_args(Effect)) + "."]
+    return "\n".join(lines)
 
 
 def _line_of(text: str, loc: tuple[Any, ...]) -> int | None:

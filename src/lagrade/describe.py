@@ -1,0 +1,74 @@
+"""A problem in words, as a student reads it: what ``lagrade show`` and ``lagrade template`` print,
+and what the course server's page shows (the same text, from one place)."""
+
+from __future__ import annotations
+
+from lagrade.spec import KINDS, Problem
+
+
+def show_text(p: Problem) -> str:
+    """Statement, assumptions, symbols to use and the parts asked (never a reference value: only the
+    keys of a dict answer)."""
+    out = [f"Problem {p.id}: {p.title}", ""]
+    if p.statement:
+        out += [p.statement.strip(), ""]
+    if p.assumptions:
+        out += ["Assumptions:"] + [f"  - {a}" for a in p.assumptions] + [""]
+    if p.parameters:
+        out.append("Parameters (symbols, matched by name):")
+        out += [f"  {q.name:<10} {q.description}{' (> 0)' if q.positive else ''}" for q in p.parameters]
+        out.append("")
+    for s in p.systems:
+        label = f"System ({s.key}) {s.title}".rstrip() if s.key else "Coordinates"
+        out.append(f"{label}:" if s.key else "Coordinates (functions of t):")
+        out += [f"  {c.name + '(t)':<12} {c.description}" for c in s.coordinates]
+        for c in s.constraints:
+            out.append(f"  constraint: {c.coordinate} = {c.value}" +
+                       (f"  (multiplier {c.multiplier})" if c.multiplier else ""))
+        for q in s.parameters:
+            out.append(f"  parameter {q.name:<10} {q.description}{' (> 0)' if q.positive else ''}")
+        out.append(f"  effects: {', '.join(s.effects) or 'none'}")
+        out.append("")
+    out.append("Parts (bind these names in answer.py):")
+    for part in p.parts:
+        alias = f" (also {', '.join(part.aliases)})" if part.aliases else ""
+        sys_note = f" [system {part.system}]" if part.system else ""
+        out.append(f"  {part.name:<12} {part.prompt or part.kind}{sys_note}{alias}")
+        detail = KINDS[part.kind].expects
+        if part.kind == "expression" and isinstance(part.reference, dict):
+            detail = f"dict with keys {', '.join(repr(k) for k in part.reference)}"
+        if part.linearized:
+            detail += "; linearized about equilibrium"
+        if part.symbols:
+            detail += f"; may use {', '.join(part.symbols)}"
+        out.append(f"  {'':<12}   -> {detail}")
+    return "\n".join(out)
+
+
+def template_text(p: Problem) -> str:
+    """A skeleton answer.py with every part as a name to fill."""
+    lines = [f'"""Answer to problem {p.id}: {p.title}."""', "", "from lagrade.answer import *", ""]
+    params = " ".join(q.name for q in p.parameters)
+    if params:
+        lines.append(f"{', '.join(q.name for q in p.parameters)} = parameters(\"{params}\")")
+    for s in p.systems:
+        if s.parameters:
+            names = [q.name for q in s.parameters]
+            lines.append(f"# system ({s.key}) only: {', '.join(names)} = parameters(\"{' '.join(names)}\")")
+    for s in p.systems:
+        names = [c.name for c in s.coordinates]
+        if s.key:
+            lines.append(f"# system ({s.key}) {s.title}")
+        lines.append(f"{', '.join(names)} = coordinates(\"{' '.join(names)}\")")
+        if any(part.kind in ("hamiltonian", "hamilton_eqs") and part.system == s.key for part in p.parts):
+            moms = [f"p_{n}" for n in names]
+            lines.append(f"{', '.join(moms)} = momenta(\"{' '.join(moms)}\")")
+    lines.append("")
+    for part in p.parts:
+        lines.append(f"# {part.prompt or part.kind}: {KINDS[part.kind].expects}")
+        if part.kind == "expression" and isinstance(part.reference, dict):
+            lines.append(f"# {part.name} = {{{', '.join(f'{k!r}: ...' for k in part.reference)}}}")
+        else:
+            lines.append(f"# {part.name} = ")
+        lines.append("")
+    return "\n".join(lines).rstrip() + "\n"
