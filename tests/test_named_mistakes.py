@@ -2,13 +2,15 @@
 
 The golden answer for each mistake is the mistake itself, turned into what a student would bind:
 coordinates as functions of time, and any derived quantity the instructor wrote it with (an
-acceleration ``x_dd``, a multiplier ``lam``) replaced by its expression in the state.
+acceleration ``x_dd``, a multiplier ``lam``) replaced by its expression in the state. The feedback
+it gets must not give a reference away (`leaks.reveals`).
 """
 
 from __future__ import annotations
 
 import pytest
 import sympy as sp
+from leaks import reveals
 
 from lagrade.answers.load import LoadedAnswer
 from lagrade.checkers.values import _symbolic_reference
@@ -62,3 +64,4 @@ def test_named_mistake_is_recognised(pid, part_name, index):
     graded = result.parts[0]
     assert graded.verdict != "correct", f"the named mistake scores full marks: {mistake.answer}"
     assert mistake.message in graded.feedback, graded.feedback
+    assert not reveals(pid, graded.feedback), f"the feedback gives a reference away: {reveals(pid, graded.feedback)}"

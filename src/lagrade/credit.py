@@ -22,7 +22,8 @@ class Credit(BaseModel):
     per_equation: bool = True
     #: exact nonlinear equations where the linearized ones were asked.
     nonlinear_for_linearized: float = Field(1.0, ge=0, le=1)
-    #: a wrong extra entry in an order-free list (normal modes, conserved quantities) cancels a right one.
+    #: a wrong extra entry in an order-free list (normal modes, conserved quantities, cyclic names) cancels
+    #: a right one; "extra" means beyond the expected number (two asked, one right and one wrong: half).
     penalize_extra_entries: bool = True
 
 

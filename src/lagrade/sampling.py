@@ -8,6 +8,7 @@ generator makes every verdict reproducible.
 from __future__ import annotations
 
 import zlib
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -35,14 +36,17 @@ def rng_for(*keys: str) -> np.random.Generator:
     return np.random.default_rng(zlib.crc32("/".join(keys).encode()))
 
 
-def sample_points(mech: Mechanics, K: int, rng: np.random.Generator, extra: list[str] = ()) -> Points:
+def sample_points(mech: Mechanics, K: int, rng: np.random.Generator,
+                  extra: Mapping[str, tuple[float, float]] | Sequence[str] = ()) -> Points:
     """States (q, qd, qdd, p, t) and parameters; ``qdd`` random (for identities in the accelerations)
-    and ``qdd_ref`` the accelerations the reference dynamics gives at those states."""
+    and ``qdd_ref`` the accelerations the reference dynamics gives at those states. ``extra``: a
+    part's own symbols (``Part.symbol_domains``), each with its range, or names sampled in [0.5, 1.5]."""
     vals: dict[sp.Symbol, np.ndarray] = {}
     for p in mech.parameters:
         vals[sp.Symbol(p.name)] = rng.uniform(*p.sample, K)
-    for name in extra:
-        vals.setdefault(sp.Symbol(name), rng.uniform(0.5, 1.5, K))
+    domains = extra if isinstance(extra, Mapping) else {name: (0.5, 1.5) for name in extra}
+    for name, (lo, hi) in domains.items():
+        vals.setdefault(sp.Symbol(name), rng.uniform(lo, hi, K))
     coords = {c.name: c for c in mech.system.coordinates}
     for name, q, qd, qdd in zip(mech.names, mech.s.q, mech.s.qd, mech.s.qdd):
         c = coords[name]

@@ -73,18 +73,29 @@ def _load_toml(path: Path, problem: Problem, names: dict[str, str]) -> LoadedAns
     functions = coords + [f"p_{c}" for c in coords]
     known = sorted({p.name for s in problem.systems for p in problem.parameters_of(s.key)}) + \
         [f"delta_{c}" for c in coords] + \
-        [s for part in problem.parts for s in part.symbols] + ["t"]
+        [s for part in problem.parts for s in part.symbols] + ["t"] + _equation_names(problem, coords)
     raw, problems = load_toml_answer(path, functions, known)
     text = path.read_text(encoding="utf-8", errors="replace")
     for prob in problems:
-        for name in names:
-            if prob.line is not None and _binds(text, prob.line, name):
+        for name in names:  # the part a problem is about: its line binds it, or (a table) it names it first
+            if (prob.line is not None and _binds(text, prob.line, name)) or prob.message.startswith(f"{name}: "):
                 out.part_problems[names[name]] = prob
     if any(prob.line is None for prob in problems):
         out.fatal = next(prob for prob in problems if prob.line is None)
-    if not raw and problems:  # the file is not TOML at all: nothing in it can be graded
+    if not raw and problems and not out.part_problems:  # not TOML at all: nothing in it can be graded
         out.fatal, out.status = problems[0], "error"
     return _bind(out, raw, problems, path, problem, names)
+
+
+def _equation_names(problem: Problem, coords: list[str]) -> list[str]:
+    """Names an equation of motion may use besides the problem's: Lagrange multipliers (the problem's
+    own, and lam, lambda_1, mu2 ... as students name them) and generalized forces Q_q left as symbols.
+    The checker decides what they mean; a name the problem gives a parameter stays that parameter."""
+    own = [c.multiplier for s in problem.systems for c in s.constraints if c.multiplier]
+    usual = [f"{base}{suffix}" for base in ("lam", "lamda", "mu", "nu")
+             for suffix in ("", *(f"{sep}{i}" for sep in ("", "_") for i in range(1, 5)))]
+    usual += [f"lambda_{i}" for i in range(1, 5)]
+    return sorted({*own, *usual, *(f"Q_{c}" for c in coords)})
 
 
 def _finish_py(path: Path, problem: Problem, names: dict[str, str], outcome) -> LoadedAnswer:
@@ -108,9 +119,9 @@ def _bind(out: LoadedAnswer, raw: dict, problems: list, path: Path, problem: Pro
     for name, value in raw.items():
         if name in names:
             part = names[name]
-            # ``a = Symbol("a")`` (a radius named like the part) must not shadow an alias answer.
-            if part not in out.values or _is_own_symbol(out.values[part], part):
-                out.values[part] = value
+            if _is_own_symbol(value, name):
+                continue  # ``lam = symbols("lam")``: a multiplier named like the part, not an answer to it
+            out.values.setdefault(part, value)
         elif path.suffix == ".toml":
             out.problems.append(AnswerProblem(file=str(path), line=None,
                                               message=f"'{name}' is not a part of problem {problem.id}; ignored"))

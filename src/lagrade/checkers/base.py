@@ -3,10 +3,13 @@
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
+import numpy as np
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from lagrade.compare.trajectory import ACCURACY, Accuracy
 from lagrade.credit import Credit
@@ -64,6 +67,28 @@ def graded(part: Part, fraction: float, method: Method, feedback: str, credit: C
     return result(part, verdict, fraction, method, feedback)
 
 
+def surplus(wrong: int, given: int, expected: int, ctx: Context) -> int:
+    """How many wrong entries of an order-free list are surplus, each cancelling a right one: only
+    those beyond the expected number (two frequencies asked, one right and one wrong: none)."""
+    if not ctx.credit.penalize_extra_entries:
+        return 0
+    return min(wrong, max(given - expected, 0))
+
+
+def factor_text(c: float) -> str | None:
+    """A measured factor as a student should read it, when it names a slip: a simple fraction (2, 1/2,
+    3/2: a missing 1/2, a doubled term). Any other factor (1.0001) is not said: the answer divided
+    by it would be the reference, and "1 times" would be false; None then."""
+    from fractions import Fraction
+
+    if not np.isfinite(c) or c == 0:
+        return None
+    frac = Fraction(c).limit_denominator(12)
+    if frac not in (1, -1) and abs(float(frac) - c) <= 1e-9 * abs(c):
+        return str(frac)
+    return None
+
+
 def suggest(name: str, known: Iterable[str]) -> str:
     close = difflib.get_close_matches(name, list(known), n=1)
     return f" (did you mean '{close[0]}'?)" if close else ""
@@ -94,15 +119,53 @@ def read_expr(value: object, part: Part, mech: Mechanics, *, plain_coordinates: 
                       max_order=max_order, extra=extra)
 
 
+#: names students give Lagrange multipliers (lam, lambda_1, mu2 ...), when not a name of the problem
+MULTIPLIER_NAME = re.compile(r"^(lam|lamda|lambda|mu|nu)(_?[0-9]+|_[A-Za-z][A-Za-z0-9]*)?$")
+
+
+def multiplier_names(expr: sp.Basic, mech: Mechanics, part: Part) -> set[str]:
+    """The names in ``expr`` that can only be Lagrange multipliers: multiplier-like and not a
+    parameter, coordinate or symbol of the part (a parameter mu stays the parameter)."""
+    taken = {p.name for p in mech.parameters} | set(mech.all_names) | set(part.symbols) | {"t"}
+    names = {s.name for s in expr.free_symbols if isinstance(s, sp.Symbol)}
+    names |= {f.func.__name__ for f in expr.atoms(AppliedUndef)}
+    declared = {str(m) for m in mech.multipliers}
+    return {n for n in names - taken if n in declared or MULTIPLIER_NAME.match(n)}
+
+
+def _evaluate_derivatives(expr: sp.Basic) -> sp.Basic:
+    """``Derivative(m*r**2*omega, t)`` left unevaluated means its value: differentiate it. A derivative
+    of a bare coordinate ``Derivative(r(t), t)`` is the state's velocity and stays as it is."""
+    pending = [d for d in expr.atoms(sp.Derivative) if not isinstance(d.expr, AppliedUndef)]
+    if not pending:
+        return expr
+    try:
+        return expr.xreplace({d: d.doit() for d in pending}) if all(
+            v.is_Symbol for d in pending for v in d.variables) else expr
+    except Exception:  # noqa: BLE001  (left as it was: to_state names what it cannot read)
+        return expr
+
+
+def _real_parts(expr: sp.Basic) -> sp.Basic:
+    """``re(t)``, ``im(theta)`` (from ``expand(complex=True)``): every quantity of a problem is real,
+    so read them with real symbols, then go back to the engine's plain symbols."""
+    if not expr.has(sp.re, sp.im, sp.arg, sp.conjugate):
+        return expr
+    real = {s: sp.Symbol(s.name, real=True) for s in expr.free_symbols if isinstance(s, sp.Symbol)}
+    back = {v: sp.Symbol(k.name) for k, v in real.items()}
+    return expr.xreplace(real).xreplace(back)
+
+
 def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates: bool, momenta: bool = False,
                max_order: int = 2, extra: Iterable[str] = ()) -> sp.Expr:
     params = [p.name for p in mech.parameters]
     coords = list(mech.names)
+    expr = _evaluate_derivatives(expr)
     # A text answer reads every coordinate name of the problem as a function of t; in a system where
-    # that name is a parameter (12.8: theta), it is the parameter.
+    # that name is a parameter (12.8: theta), it is the parameter; so is a multiplier written lam(t).
     nodes = nodes_of(expr)
     stray = {f: sp.Symbol(f.func.__name__) for f in nodes.applied
-             if f.func.__name__ in params and f.args == (sp.Symbol("t"),)}
+             if (f.func.__name__ in params or f.func.__name__ in extra) and f.args == (sp.Symbol("t"),)}
     if stray:
         expr = expr.xreplace(stray)
         nodes = nodes_of(expr)
@@ -115,16 +178,27 @@ def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates:
                                 f"time: {s.name} = Function('{s.name}')(t), velocity {s.name}.diff(t)")
         if s.name not in allowed:
             hint = suggest(s.name, allowed)
-            raise InvalidAnswer(f"unknown name '{s.name}' in {part.name}{hint}; this problem uses "
-                                f"{', '.join(sorted(allowed))}")
+            public = sorted({*params, *part.symbols, *mech.all_names}) + ["t"]
+            raise InvalidAnswer(f"unknown name '{s.name}' in {part.name}{hint}; the problem's names are "
+                                f"{', '.join(public)}")
     try:
-        return sp.sympify(to_state(expr, list(mech.all_names), max_order=max_order, momenta_too=momenta, nodes=nodes))
+        state = sp.sympify(to_state(expr, list(mech.all_names), max_order=max_order, momenta_too=momenta, nodes=nodes))
     except NotationError as exc:
         raise InvalidAnswer(f"{part.name}: {exc}") from None
+    return _real_parts(state)
 
 
 def equation_rows(value: object, part: Part) -> list[sp.Expr]:
-    """A list of equations as expressions meaning ``= 0`` (one bare equation also allowed)."""
+    """A list of equations as expressions meaning ``= 0`` (one bare equation also allowed).
+
+    What ``sympy.solve`` returns is read too: a dict ``{theta.diff(t, 2): rhs}`` means
+    ``theta'' = rhs``, and ``solve(..., dict=True)`` wraps it in a list."""
+    if isinstance(value, (list, tuple)) and len(value) == 1 and isinstance(value[0], dict):
+        value = value[0]
+    if isinstance(value, dict):
+        if not value:
+            raise InvalidAnswer(f"{part.name} is an empty dict; give one equation per coordinate")
+        value = [sp.Eq(as_expr(k, part), as_expr(v, part), evaluate=False) for k, v in value.items()]
     items = value if isinstance(value, (list, tuple)) else [value]
     if isinstance(value, sp.MatrixBase):
         items = list(value)

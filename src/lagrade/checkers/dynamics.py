@@ -14,15 +14,29 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from lagrade.checkers.base import Context, InvalidAnswer, equation_rows, graded, read_expr, read_sympy
+from lagrade.checkers.base import (
+    Context,
+    InvalidAnswer,
+    equation_rows,
+    factor_text,
+    graded,
+    multiplier_names,
+    read_expr,
+    read_sympy,
+)
 from lagrade.compare.equations import CompiledRows, analyse_rows
+from lagrade.compare.rates import CompiledRates
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs
-from lagrade.compare.rates import CompiledRates
 from lagrade.numeric import Vectorized, agree, compile_exprs, evaluate, scale_of
 from lagrade.reference import Mechanics, split_energy
 from lagrade.result import PartResult
-from lagrade.sampling import rng_for, sample_points, state_arrays, with_reference_dynamics
+from lagrade.sampling import (
+    rng_for,
+    sample_points,
+    state_arrays,
+    with_reference_dynamics,
+)
 from lagrade.spec import Part
 from lagrade.symbols import T
 
@@ -31,7 +45,7 @@ from lagrade.symbols import T
 
 def _grouped_points(ctx: Context, mech: Mechanics, part: Part, groups: int = 6, per_group: int = 4):
     """Points in groups sharing parameters and time, so 'constant' can be told from 'state-dependent'."""
-    pts = sample_points(mech, groups * per_group, rng_for(ctx.problem.id, part.name), extra=part.symbols)
+    pts = sample_points(mech, groups * per_group, rng_for(ctx.problem.id, part.name), extra=part.symbol_domains)
     for sym in [*mech.params, T, *(sp.Symbol(s) for s in part.symbols)]:
         v = pts.values[sym]
         pts.values[sym] = np.repeat(v[::per_group], per_group)
@@ -41,7 +55,7 @@ def _grouped_points(ctx: Context, mech: Mechanics, part: Part, groups: int = 6, 
 def _trajectory_inits(ctx: Context, mech: Mechanics, part: Part):
     """Initial states per system (not per part), so that L, eom and H share one reference motion."""
     pts = sample_points(mech, ctx.accuracy.trajectories,
-                        rng_for(ctx.problem.id, mech.system.key, "trajectory", *part.symbols), extra=part.symbols)
+                        rng_for(ctx.problem.id, mech.system.key, "trajectory", *part.symbols), extra=part.symbol_domains)
     q, qd, _, params = state_arrays(mech, pts)
     extra = np.array([pts[sp.Symbol(s)] for s in part.symbols]).reshape(len(part.symbols), pts.K)
     return q, qd, params, extra
@@ -228,15 +242,20 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
         return _decide(part, proof, traj, note)
     if c is not None and np.all(np.abs(c) > 1e-9):
         same = np.allclose(c, c[0], rtol=1e-6)
-        factor = f"{c[0]:.4g}" if same else "a factor that depends on the parameters"
+        factor = (factor_text(float(c[0])) or "a constant factor") if same else "a factor that depends on the parameters"
         return graded(part, ctx.credit.scaled_lagrangian, "numeric",
                       f"your Lagrangian is the right one scaled by {factor}: it gives the same equations of motion, "
                       "but L = T - V fixes the scale (the momenta and H would be off by that factor).")
     message = _lagrangian_diagnosis(ctx, part, mech, L_s, E_s, pts, groups, per)
     missing = _undetermined(L_s, mech, pts)
     if missing:
-        message += (f" Your L gives no equation for {missing}'': it has no kinetic energy in "
-                    f"{missing}' (the matrix of d2L/dq'dq' is singular).")
+        used = {str(x) for x in L_s.free_symbols}
+        if {missing, f"{missing}_d"} & used:
+            message += (f" Your L gives no equation for {missing}'': it has no kinetic energy in "
+                        f"{missing}' (the matrix of d2L/dq'dq' is singular).")
+        elif "leaves out a coordinate" not in message:
+            message += (" Your L does not determine every acceleration: its kinetic energy leaves a coordinate out "
+                        "(the matrix of d2L/dq'dq' is singular).")
         return _wrong(part, 0.0, message, None, ctx.credit)
     traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
     return _wrong(part, 0.0, message, traj)
@@ -267,21 +286,47 @@ def _lagrangian_diagnosis(ctx, part, mech, L_s, E_s, pts, groups, per) -> str:
             return mistake.message
     kin, pot = split_energy(mech.L, mech)
     generic = [
-        (kin + pot, "the potential energy has the wrong sign: L = T - V."),
-        (2 * kin - pot, "the kinetic energy is twice too large: is a factor 1/2 missing?"),
-        (kin / 2 - pot, "the kinetic energy is half what it should be."),
-        (kin, "the potential energy is missing."),
+        (kin, -pot, "the potential energy has the wrong sign: L = T - V."),
+        (2 * kin, pot, "the kinetic energy is twice too large: is a factor 1/2 missing?"),
+        (kin / 2, pot, "the kinetic energy is half what it should be."),
+        (kin, sp.S.Zero, "the potential energy is missing."),
     ]
-    for L_m, message in generic:
-        if L_m != 0 and _scaling(E_s, _el_matrix(L_m, mech, pts, part), groups, per) is not None:
+    for T_m, V_m, message in generic:
+        L_m = T_m - V_m
+        if L_m != 0 and _scaling(E_s, _el_matrix(L_m, mech, pts, part), groups, per) is not None \
+                and _says_true(L_s, T_m, V_m, mech, pts, groups, per):
             return "Incorrect: " + message
     E_r = _el_matrix(mech.L, mech, pts, part)
     bad = [name for i, name in enumerate(mech.names) if not np.all(agree(E_s[i], E_r[i]))]
-    message = ("Incorrect: the Lagrange equation your L gives for " + ", ".join(bad) +
-               " is not the true one (a term of T or V is missing or wrong).")
+    used = {str(x) for x in L_s.free_symbols}
+    named = [name for name in bad if {name, f"{name}_d"} & used]  # never a coordinate the student left out
+    if len(named) == len(bad):
+        message = ("Incorrect: the Lagrange equation your L gives for " + ", ".join(bad) +
+                   " is not the true one (a term of T or V is missing or wrong).")
+    else:
+        message = ("Incorrect: your L leaves out a coordinate of the problem, so its Lagrange equations are not the "
+                   "true ones (a term of T or V is missing).")
     if ctx.hints:
         message += " " + term_hints(L_s, mech.L, mech)
     return message
+
+
+def _says_true(L_s: sp.Expr, T_m: sp.Expr, V_m: sp.Expr, mech: Mechanics, pts, groups: int, per: int) -> bool:
+    """A generic diagnosis ("the kinetic energy is half what it should be") is given only when the
+    student's own L bears it out: its velocity terms are T_m and the rest is -V_m up to a constant
+    (equal equations of motion alone do not say which part of L is wrong)."""
+    args = [*mech.s.q, *mech.s.qd, T, *mech.params]
+    T_s, V_s = split_energy(L_s, mech)
+    try:
+        with np.errstate(all="ignore"):
+            a, b, c, d = evaluate([T_s, T_m, V_s, V_m], args, pts.args(args))
+    except Exception:  # noqa: BLE001
+        return False
+    if not np.all(agree(a, b)):
+        return False
+    dv = c - d
+    tol = 1e-8 * scale_of(c, d)
+    return all(np.all(np.abs(dv[g * per:(g + 1) * per] - dv[g * per]) <= tol) for g in range(groups))
 
 
 def _terms(expr: sp.Expr, mech: Mechanics) -> dict[sp.Expr, sp.Expr]:
@@ -327,24 +372,69 @@ def term_hints(L_s: sp.Expr, L_ref: sp.Expr, mech: Mechanics) -> str:
 # ----------------------------------------------------------------------------- equations of motion
 
 
-def _eom_rows(ctx: Context, part: Part, value: object, mech: Mechanics) -> list[sp.Expr]:
-    rows = [read_sympy(r, part, mech, plain_coordinates=False) for r in equation_rows(value, part)]
-    fixed = {s: e for s, e in mech.constrained.items()}
-    return [r.xreplace(fixed) if fixed else r for r in rows]
+def _eom_rows(ctx: Context, part: Part, value: object, mech: Mechanics) -> tuple[list[sp.Expr], list[str]]:
+    """The student's equations in state symbols, with the problem's constraints substituted, the
+    generalized forces ``Q_q`` a student may leave as symbols (where the scene has them) replaced by
+    the scene's, and Lagrange multipliers (``lam``, ``lambda_1`` ...) eliminated."""
+    raw = equation_rows(value, part)
+    lams = sorted(set().union(*(multiplier_names(r, mech, part) for r in raw)))
+    forces = {sp.Symbol(f"Q_{n}"): Q for n, Q in zip(mech.names, mech.Q) if Q != 0}
+    rows = [read_sympy(r, part, mech, plain_coordinates=False, extra=[*lams, *map(str, forces)]) for r in raw]
+    subs = {**forces, **mech.constrained}
+    rows = [r.xreplace(subs) if subs else r for r in rows]
+    if lams:
+        rows = _eliminate_multipliers(rows, [sp.Symbol(n) for n in lams], part)
+        rows = [r for r in rows if not _vanishes(r, mech, part)] or rows
+    return rows, lams
+
+
+def _eliminate_multipliers(rows: list[sp.Expr], lams: list[sp.Symbol], part: Part) -> list[sp.Expr]:
+    """Equations with unknown multipliers, reduced to those without: each multiplier is solved
+    from one equation it enters linearly and substituted in the others (Gaussian elimination)."""
+    rows = list(rows)
+    for lam in lams:
+        pivots = [(sp.count_ops(c), i, c) for i, r in enumerate(rows)
+                  if r.has(lam) and not (c := sp.diff(r, lam)).has(lam) and c != 0]
+        if not pivots:
+            where = "enters no equation linearly" if any(r.has(lam) for r in rows) else "enters no equation"
+            raise InvalidAnswer(f"{part.name}: the multiplier {lam} {where}; give the equations with the "
+                                "multipliers and the constraints, or the equations with the multipliers eliminated")
+        _, i, c = min(pivots, key=lambda x: (x[0], x[1]))
+        value = -rows[i].xreplace({lam: 0}) / c
+        rows = [r.xreplace({lam: value}) if r.has(lam) else r for k, r in enumerate(rows) if k != i]
+    return rows
+
+
+def _vanishes(row: sp.Expr, mech: Mechanics, part: Part) -> bool:
+    """A row that is identically zero once the constraints are substituted (the constraint itself,
+    given next to the equations of motion)."""
+    if row == 0:
+        return True
+    pts = sample_points(mech, 6, rng_for(mech.problem.id, part.name, "constraint"), extra=part.symbol_domains)
+    args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *mech.params, *(sp.Symbol(x) for x in part.symbols)]
+    if row.free_symbols - set(args):
+        return False
+    with np.errstate(all="ignore"):
+        v = evaluate([row], args, pts.args(args))[0]
+    return bool(np.all(np.isfinite(v)) and np.allclose(v, 0, atol=1e-10))
 
 
 def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     mech = ctx.mech(part)
-    rows = _eom_rows(ctx, part, value, mech)
+    rows, lams = _eom_rows(ctx, part, value, mech)
     if part.linearized:
         return _check_linearized(ctx, part, mech, rows)
     pts = with_reference_dynamics(mech, sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name),
-                                                      extra=part.symbols))
+                                                      extra=part.symbol_domains))
     extra = [sp.Symbol(s) for s in part.symbols]
     args = [*mech.s.q, *mech.s.qd, T, *mech.params, *extra]
     compiled = CompiledRows(rows, mech.s.qdd, args)
     truth = np.array(pts.args(mech.s.qdd))
-    an = analyse_rows(compiled, pts.args(args), truth, list(mech.names))
+    argv = pts.args(args)
+    velocities = set(mech.s.qd)
+    rest = [np.zeros_like(np.asarray(a, dtype=float)) if s in velocities else a for s, a in zip(args, argv)]
+    an = analyse_rows(compiled, argv, truth, list(mech.names), reference_jacobian=_mass_at(mech, pts),
+                      at_rest=(rest, _mass_at(mech, pts, at_rest=True)))
 
     def student_acc() -> Vectorized:
         return compiled.solver
@@ -357,13 +447,34 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     named = _eom_mistake(part, mech, compiled, pts.args(args), list(mech.names))
     problems = [] if named is None else [named.rstrip(".")]
     for i in an.wrong if named is None else []:
+        if lams:  # the rows are the student's after elimination: their numbers would not be the student's
+            where = f"for {an.labels[i]}''" if an.labels[i] != "none" else "with no acceleration in it"
+            problems.append(f"the equation {where} does not hold for the true motion")
+            continue
         where = f"the one mainly for {an.labels[i]}''" if an.labels[i] != "none" else "it has no acceleration in it"
         problems.append(f"equation {i + 1} ({where}) does not hold for the true motion")
-    if an.rank < an.n and not an.wrong:
-        problems.append(f"your equations determine only {an.rank} of the {an.n} accelerations "
-                        f"({', '.join(x + chr(39) * 2 for x in mech.names)}): an equation is missing or repeated")
+    if an.vanishing_factor:
+        problems.append("your equations hold, but one is multiplied by a factor that becomes zero within "
+                        "the problem's range (a velocity, say, as in d/dt of the energy): where it does, they "
+                        "no longer determine the accelerations; divide the factor out")
+    elif an.rank < an.n and not an.wrong:
+        problems.append(f"your equations determine only {an.rank} of the {an.n} accelerations: "
+                        f"an equation is missing or repeated")
+    if lams and problems:
+        problems[0] = f"once the multipliers ({', '.join(lams)}) are eliminated, {problems[0]}"
     traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc)) if len(rows) >= an.n else None
     return _wrong(part, an.fraction, named or _sentence(problems), traj, ctx.credit)
+
+
+def _mass_at(mech: Mechanics, pts, at_rest: bool = False) -> np.ndarray:
+    """The mass matrix (n, n, K) at the sampled states (or at them with every velocity zero): the
+    Jacobian of Lagrange's equations in q''."""
+    q, qd, t, params = (np.array(pts.args(mech.s.q)), np.array(pts.args(mech.s.qd)), pts[T],
+                        np.array(pts.args(mech.params)).reshape(len(mech.params), pts.K))
+    if at_rest:
+        qd = np.zeros_like(np.asarray(qd, dtype=float))
+    n = len(mech.names)
+    return mech._mass_f(*q, *qd, t, *params).reshape(n, n, pts.K)
 
 
 def _relabel(an, compiled: CompiledRows, mech: Mechanics, pts, args, truth) -> None:
@@ -371,17 +482,17 @@ def _relabel(an, compiled: CompiledRows, mech: Mechanics, pts, args, truth) -> N
     student is pointed at the right coordinate even when another acceleration has a bigger coefficient."""
     argv = pts.args(args)
     J = compiled.jacobian(argv, truth)  # (m, n, K)
-    q, qd, t, params = (np.array(pts.args(mech.s.q)), np.array(pts.args(mech.s.qd)), pts[T],
-                        np.array(pts.args(mech.params)).reshape(len(mech.params), pts.K))
     n = len(mech.names)
-    M = mech._mass_f(*q, *qd, t, *params).reshape(n, n, pts.K)
+    M = _mass_at(mech, pts)
     for i in an.wrong:
         scores = []
         for r in range(n):
             a, b = J[i], M[r]
             cos = np.abs((a * b).sum(axis=0)) / (np.linalg.norm(a, axis=0) * np.linalg.norm(b, axis=0) + 1e-300)
-            scores.append(np.nanmedian(cos))
-        if np.isfinite(scores).any() and max(scores) > 0:
+            # never name a coordinate whose acceleration the student's equation does not contain
+            uses = np.nanmax(np.abs(a[r])) > 1e-12 * max(np.nanmax(np.abs(a)), 1e-300) if np.isfinite(a[r]).any() else False
+            scores.append(np.nanmedian(cos) if uses else -np.inf)
+        if np.isfinite(scores).any() and np.nanmax(scores) > 0:
             an.labels[i] = mech.names[int(np.nanargmax(scores))]
 
 
@@ -417,7 +528,7 @@ def _prove_rows_equivalent(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -
 def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.Expr]) -> PartResult:
     """Small oscillations: the rows' linearization about equilibrium must span the reference's."""
     n = len(mech.names)
-    pts = sample_points(mech, 8, rng_for(ctx.problem.id, part.name), extra=part.symbols)
+    pts = sample_points(mech, 8, rng_for(ctx.problem.id, part.name), extra=part.symbol_domains)
     extra = [sp.Symbol(s) for s in part.symbols]
     eq_exprs = [mech.parse(mech.system.equilibrium.get(name, "0")) for name in mech.names]
     pargs = [*mech.params, *extra]
@@ -603,7 +714,10 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
         traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
         return _decide(part, None, traj)
     problems = [f"equation {i + 1} (for {an.labels[i]}) does not hold for the true motion" for i in an.wrong]
-    if an.rank < an.n and not an.wrong:
+    if an.vanishing_factor:
+        problems.append("your equations hold, but one is multiplied by a factor that becomes zero within "
+                        "the problem's range: where it does, they no longer determine the rates; divide it out")
+    elif an.rank < an.n and not an.wrong:
         problems.append(f"your equations determine only {an.rank} of the {an.n} rates "
                         f"({', '.join(labels)}): Hamilton's equations are 2n first-order equations")
     traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates)) if len(rows) >= an.n else None

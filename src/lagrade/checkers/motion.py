@@ -5,7 +5,15 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from lagrade.checkers.base import Context, InvalidAnswer, graded, key_name, read_sympy, as_expr
+from lagrade.checkers.base import (
+    Context,
+    InvalidAnswer,
+    as_expr,
+    graded,
+    key_name,
+    read_sympy,
+    surplus,
+)
 from lagrade.numeric import evaluate
 from lagrade.reference import Mechanics, total_derivative
 from lagrade.result import PartResult
@@ -64,7 +72,7 @@ def check_conserved(ctx: Context, part: Part, value: object) -> PartResult:
                 ok = False
                 break
         covered += ok
-    wrong = len(items) - len(good) if ctx.credit.penalize_extra_entries else 0
+    wrong = surplus(len(items) - len(good), len(items), len(refs), ctx)
     fraction = max(covered - wrong, 0) / len(refs)
     if covered < len(refs):
         notes.append(f"{len(refs) - covered} of the {len(refs)} conserved quantities of this motion "
@@ -86,7 +94,7 @@ def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:
     for name in mech.names:
         e = as_expr(given[name], part)
         sol[name] = read_sympy(e, part, mech, plain_coordinates=False, max_order=0)
-    pts = sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name), extra=part.symbols)
+    pts = sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name), extra=part.symbol_domains)
     args = [T, *mech.params, *(sp.Symbol(s) for s in part.symbols)]
     argv = pts.args(args)
     # The state along the student's q(t), then each term of Lagrange's equations at that state:
@@ -116,5 +124,80 @@ def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:
         if not np.allclose(a, b, rtol=1e-8, atol=1e-10):
             notes.append(f"it does not meet the initial condition for {name}{chr(39) if key != name else ''}(0)")
     if notes:
+        if len(mech.names) > 1:
+            try:
+                entry = _entries_against_motion(ctx, part, mech, sol)
+            except Exception:  # noqa: BLE001  (per-entry credit is extra evidence; without it, all or nothing)
+                entry = None
+            if entry is not None and entry[0]:
+                right, wrong = entry
+                fraction = min(len(right) / len(mech.names), 1 - 1 / len(mech.names))
+                note = (f"{_listed(right)} {'is' if len(right) == 1 else 'are'} right; {_listed(wrong)} "
+                        f"{'does' if len(wrong) == 1 else 'do'} not follow the true motion")
+                coupled = _coupled(mech, right, wrong)
+                if coupled:
+                    note += (f" (the equations of motion couple {coupled}: check {_listed(wrong)} against the "
+                             f"equation it shares with {_listed(right)})")
+                return graded(part, fraction, "numeric", "Incorrect: " + note + ".", ctx.credit)
         return graded(part, 0.0, "numeric", "Incorrect: " + "; ".join(notes) + ".")
     return graded(part, 1.0, "numeric", "correct: satisfies the equation of motion and the initial conditions.")
+
+
+def _listed(names: list[str]) -> str:
+    return " and ".join(f"{n}(t)" for n in names)
+
+
+def _coupled(mech: Mechanics, right: list[str], wrong: list[str]) -> str:
+    """Which right and wrong coordinates share an equation (an off-diagonal mass term or a force
+    depending on the other coordinate), named for the feedback; empty if the motions are independent."""
+    index = {n: i for i, n in enumerate(mech.names)}
+    pairs = []
+    for a in right:
+        for b in wrong:
+            i, j = index[a], index[b]
+            vars_b = {mech.s.q[j], mech.s.qd[j], mech.s.qdd[j]}
+            vars_a = {mech.s.q[i], mech.s.qd[i], mech.s.qdd[i]}
+            if mech.EL[i].free_symbols & vars_b or mech.EL[j].free_symbols & vars_a:
+                pairs.append(f"{a} and {b}")
+    return ", ".join(pairs)
+
+
+def _entries_against_motion(ctx: Context, part: Part, mech: Mechanics, sol: dict[str, sp.Expr]
+                            ) -> tuple[list[str], list[str]] | None:
+    """Each coordinate's q(t) compared with the reference motion integrated from the stated initial
+    values (a few parameter draws, a few times): which entries are right on their own. None when
+    the initial values do not give the whole state or the motion cannot be integrated."""
+    from scipy.integrate import solve_ivp
+
+    keys = [*mech.names, *(f"{n}_d" for n in mech.names)]
+    if any(k not in part.initial for k in keys):
+        return None
+    K = 3
+    pts = sample_points(mech, K, rng_for(ctx.problem.id, part.name, "entries"), extra=part.symbol_domains)
+    pargs = [*mech.params, *(sp.Symbol(x) for x in part.symbols)]
+    y0 = evaluate([mech.parse(part.initial[k], part.symbols) for k in keys], pargs, pts.args(pargs))
+    params = np.array(pts.args(mech.params)).reshape(len(mech.params), K)
+    n = len(mech.names)
+    times = np.linspace(0.0, mech.system.horizon, 9)[1:]
+    ok = {name: True for name in mech.names}
+    for k in range(K):
+        def rates(t, y, k=k):
+            acc = mech.accelerations(y[:n, None], y[n:, None], np.array([t]), params[:, k:k + 1])
+            return np.concatenate([y[n:], acc[:, 0]])
+        try:
+            with np.errstate(all="ignore"):
+                run = solve_ivp(rates, (0.0, times[-1]), np.asarray(y0[:, k], dtype=float), method="DOP853",
+                                t_eval=times, rtol=1e-11, atol=1e-12)
+        except Exception:  # noqa: BLE001
+            return None
+        if not run.success:
+            return None
+        argv = [np.asarray(times), *(np.full(times.size, a[k]) for a in pts.args(pargs))]
+        with np.errstate(all="ignore"):
+            mine = evaluate([sol[name] for name in mech.names], [T, *pargs], argv)
+        for i, name in enumerate(mech.names):
+            true = run.y[i]
+            if not np.allclose(mine[i], true, rtol=1e-6, atol=1e-6 * max(np.abs(true).max(), 1.0)):
+                ok[name] = False
+    right = [name for name in mech.names if ok[name]]
+    return right, [name for name in mech.names if not ok[name]]

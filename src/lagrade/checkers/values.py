@@ -10,7 +10,17 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from lagrade.checkers.base import Context, InvalidAnswer, as_expr, graded, key_name, read_sympy, result
+from lagrade.checkers.base import (
+    Context,
+    InvalidAnswer,
+    as_expr,
+    factor_text,
+    graded,
+    key_name,
+    read_sympy,
+    result,
+    surplus,
+)
 from lagrade.compare.symbolic import _OutOfTime, proves_zero, time_bound
 from lagrade.numeric import agree, compile_exprs, evaluate, scale_of
 from lagrade.reference import Mechanics
@@ -25,7 +35,7 @@ def _domain(ctx: Context, part: Part, mech: Mechanics) -> tuple[Points, list[sp.
     key = (ctx.problem.id, part.name, ctx.points)
     if key not in mech._points:
         mech._points[key] = with_reference_dynamics(
-            mech, sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name), extra=part.symbols))
+            mech, sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name), extra=part.symbol_domains))
     cached = mech._points[key]
     pts = Points(dict(cached.values), cached.K)
     return pts, list(pts.values)
@@ -87,6 +97,10 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
 
 
 def _describe_difference(a: np.ndarray, b: np.ndarray) -> str:
+    """How a wrong result differs, in words. For a number (the same at every sample) nothing
+    relational is said: "twice", "the wrong sign" or "2*pi" would pin the reference down."""
+    if np.ptp(b) <= 1e-9 * scale_of(b):
+        return "is not equal to the correct result"
     with np.errstate(all="ignore"):
         ratio = a / b
     finite = ratio[np.isfinite(ratio)]
@@ -99,7 +113,10 @@ def _describe_difference(a: np.ndarray, b: np.ndarray) -> str:
         if np.isclose(c, 2 * np.pi) or np.isclose(c, 1 / (2 * np.pi)):
             return f"is off by a factor 2*pi{'' if c > 1 else ' (too small)'}: angular frequency and frequency differ by 2*pi"
         varies = np.ptp(b) > 1e-9 * scale_of(b)
-        return f"is {c:.4g} times the correct value" + (" (a missing or extra factor)" if varies else "")
+        said = factor_text(float(c))
+        if said is None:
+            return "is off by a constant factor"
+        return f"is {said} times the correct value" + (" (a missing or extra factor)" if varies else "")
     with np.errstate(all="ignore"):
         inverse = a * b
     if inverse.size and np.all(np.isfinite(inverse)) and np.ptp(b) > 1e-9 * scale_of(b):
@@ -128,7 +145,7 @@ def check_expression(ctx: Context, part: Part, value: object) -> PartResult:
         unknown = sorted(set(given) - set(ref))
         if unknown:
             raise InvalidAnswer(f"{part.name} has unknown keys {unknown}; expected keys {sorted(ref)}")
-        right, methods, notes = 0, set(), []
+        right, methods, notes, wrong = 0, set(), [], []
         for key, text in ref.items():
             if key not in given:
                 notes.append(f"{key} is missing")
@@ -139,9 +156,11 @@ def check_expression(ctx: Context, part: Part, value: object) -> PartResult:
             methods.add(method)
             if not ok:
                 notes.append(f"{key} {why}")
+                wrong.append(key)
         fraction = right / len(ref)
         method = "numeric" if "numeric" in methods or not methods else "symbolic"
-        feedback = "correct." if not notes else "Incorrect: " + "; ".join(notes) + "."
+        closed = [k for k in wrong if not _read(ctx, part, mech, given[k]).free_symbols & {*mech.s.qdd, *mech.multipliers}]
+        feedback = "correct." if not notes else "Incorrect: " + "; ".join(notes) + "." + _coupling(part, mech, closed)
         if notes:
             feedback = _dict_mistake_message(ctx, part, mech, given, pts, syms) or feedback
         return graded(part, fraction, method, feedback, ctx.credit)
@@ -153,6 +172,21 @@ def check_expression(ctx: Context, part: Part, value: object) -> PartResult:
         return graded(part, 1.0, method, "correct.")
     hint = _mistake_message(ctx, part, mech, value, pts, syms)
     return graded(part, 0.0, "numeric", hint or f"Incorrect: {part.name} {why}.")
+
+
+def _coupling(part: Part, mech: Mechanics, wrong: list[str]) -> str:
+    """Entries of a dict result computed from the same accelerations or constraint forces are coupled:
+    one wrong acceleration makes several of them wrong. Said when two or more wrong entries, given in
+    closed form, share one (naming the entries only, never the quantities behind them)."""
+    if len(wrong) < 2:
+        return ""
+    derived = {*mech.s.qdd, *mech.multipliers}
+    uses = {key: _reference(part, mech, part.reference[key]).free_symbols & derived for key in wrong}
+    shared = [key for key in wrong if any(uses[key] & uses[other] for other in wrong if other != key)]
+    if len(shared) < 2:
+        return ""
+    return (f" {', '.join(shared[:-1])} and {shared[-1]} are coupled: they follow from the same accelerations "
+            "or forces, so one error there makes each of them wrong.")
 
 
 def _is_definition(eq: sp.Equality, mech: Mechanics, part: Part) -> bool:
@@ -204,7 +238,7 @@ def check_expression_set(ctx: Context, part: Part, value: object) -> PartResult:
             matched += 1
             used.add(j)
     extra = len(studs) - len(used)
-    fraction = max(matched - (extra if ctx.credit.penalize_extra_entries else 0), 0) / len(refs)
+    fraction = max(matched - surplus(extra, len(studs), len(refs), ctx), 0) / len(refs)
     if fraction >= 1.0:
         return graded(part, 1.0, "numeric", "correct.")
     notes = [f"{matched} of the {len(refs)} values are right"]
@@ -220,6 +254,8 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
     ref = _reference(part, mech, part.reference)
     x = sp.Symbol(part.unknown)
     b = _evaluate(ref, pts, syms)
+    if isinstance(value, sp.Expr) and part.unknown in _names_in(value):
+        value = sp.Eq(value, 0)  # a value of theta cannot contain theta: `3*cos(theta) - 2` means = 0
     if isinstance(value, sp.Equality):
         expr = read_sympy(value.lhs - value.rhs, part, mech, plain_coordinates=True, extra=[part.unknown])
         if x not in expr.free_symbols:
@@ -229,9 +265,15 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
         at_root = f(b, *pts.args(others))[0]
         off = f(b + 0.05, *pts.args(others))[0]
         scale = scale_of(off)
-        if np.all(np.abs(at_root) <= 1e-8 * scale) and np.any(np.abs(off) > 1e-6 * scale):
-            return graded(part, 1.0, "numeric", f"correct: the true {part.unknown} satisfies your equation.")
-        return graded(part, 0.0, "numeric", f"Incorrect: the true {part.unknown} does not satisfy your equation.")
+        if not (np.all(np.abs(at_root) <= 1e-8 * scale) and np.any(np.abs(off) > 1e-6 * scale)):
+            return graded(part, 0.0, "numeric", f"Incorrect: the true {part.unknown} does not satisfy your equation.")
+        if part.domain is not None and _another_root(f, b, pts.args(others), part.domain):
+            lo, hi = part.domain
+            return graded(part, 0.0, "numeric",
+                          f"Incorrect: the true {part.unknown} satisfies your equation, but so does another "
+                          f"{part.unknown} between {lo:.4g} and {hi:.4g}: an equation for it must single it out "
+                          f"(squaring, or multiplying by a factor, adds solutions).")
+        return graded(part, 1.0, "numeric", f"correct: the true {part.unknown} satisfies your equation.")
     student = _read(ctx, part, mech, value)
     a = _evaluate(student, pts, syms)
     if np.all(agree(a, b)):
@@ -245,11 +287,48 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
     return graded(part, 0.0, "numeric", f"Incorrect: {part.unknown} {_describe_difference(a, b)}.")
 
 
+def _names_in(expr: sp.Basic) -> set[str]:
+    """Symbol names and names of applied functions (theta written as theta(t))."""
+    from sympy.core.function import AppliedUndef
+
+    return {s.name for s in expr.free_symbols if isinstance(s, sp.Symbol)} | {
+        f.func.__name__ for f in expr.atoms(AppliedUndef)}
+
+
+def _another_root(f, root: np.ndarray, others: list[np.ndarray], domain: tuple[float, float],
+                  states: int = 8, steps: int = 4000) -> bool:
+    """Does ``f(x, *others) = 0`` have a solution in the open ``domain`` other than ``root``, at
+    any of the first sampled parameter sets? Found as sign changes on a fine grid, where |f| is
+    small on one side (a pole changes sign too, with |f| large on both)."""
+    grid = np.linspace(*domain, steps + 1)[1:-1]
+    step = grid[1] - grid[0]
+    for k in range(min(states, len(root))):
+        with np.errstate(all="ignore"):
+            values = np.asarray(f(grid, *(np.full_like(grid, a[k]) for a in others))[0], dtype=float)
+        finite = np.isfinite(values)
+        if not finite.any():
+            continue
+        typical = float(np.median(np.abs(values[finite]))) or 1.0
+        near = np.abs(values) <= 0.05 * typical
+        change = (np.sign(values[:-1]) * np.sign(values[1:]) <= 0) & finite[:-1] & finite[1:] & (near[:-1] | near[1:])
+        found = grid[:-1][change]
+        if np.any(np.abs(found - root[k]) > 3 * step):
+            return True
+    return False
+
+
+_YES_NO = {"yes": True, "no": False, "true": True, "false": False}
+
+
 def check_boolean(ctx: Context, part: Part, value: object) -> PartResult:
     if isinstance(value, sp.logic.boolalg.BooleanAtom):
         value = bool(value)
+    if isinstance(value, str) and value.strip().lower() in _YES_NO:
+        value = _YES_NO[value.strip().lower()]
+    if isinstance(value, sp.Symbol) and value.name.lower() in _YES_NO:
+        value = _YES_NO[value.name.lower()]
     if not isinstance(value, bool):
-        raise InvalidAnswer(f"{part.name} should be True or False")
+        raise InvalidAnswer(f"{part.name} should be True or False (or \"yes\" / \"no\")")
     ok = value is part.reference
     return result(part, "correct" if ok else "incorrect", float(ok), "exact",
                   "correct." if ok else f"Incorrect: the answer to '{part.prompt or part.name}' is not {value}.")
@@ -272,7 +351,7 @@ def check_names(ctx: Context, part: Part, value: object) -> PartResult:
     want = set(part.reference)
     right = len(given & want)
     wrong = sorted(given - want)
-    penalty = len(wrong) if ctx.credit.penalize_extra_entries else 0
+    penalty = surplus(len(wrong), len(given), len(want), ctx)
     fraction = max(right - penalty, 0) / max(len(want), 1) if want else float(not given)
     notes = []
     if want - given:

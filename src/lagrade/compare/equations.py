@@ -26,6 +26,10 @@ class RowAnalysis:
     rank: int
     n: int
     labels: list[str]  # the unknown each row mainly determines
+    #: the rows hold and fix every rate at the sampled states, but their determinant (relative to the
+    #: reference's) takes both signs there: a factor such as q' or (r - l0) vanishes in between, where
+    #: they no longer determine the motion (dE/dt = q'*(equation) = 0 is the classic)
+    vanishing_factor: bool = False
 
     @property
     def wrong(self) -> list[int]:
@@ -99,8 +103,15 @@ class CompiledRows:
 
 
 def analyse_rows(rows: CompiledRows, argv: Sequence[np.ndarray], truth: np.ndarray, labels: Sequence[str],
-                 rtol: float = 1e-7) -> RowAnalysis:
-    """Which rows hold at the true rates, which are empty, and how many unknowns they fix."""
+                 rtol: float = 1e-7, reference_jacobian: np.ndarray | None = None,
+                 at_rest: tuple[Sequence[np.ndarray], np.ndarray | None] | None = None) -> RowAnalysis:
+    """Which rows hold at the true rates, which are empty, and how many unknowns they fix.
+
+    ``reference_jacobian`` (n, n, K), the reference equations' Jacobian in the rates (the mass
+    matrix for Lagrange's equations; None for a constant one): a square system whose determinant
+    relative to it changes sign between sampled states has a factor that vanishes in the domain.
+    ``at_rest``: the same states with every velocity zero, and the reference Jacobian there (the
+    most common initial state; a factor q' only vanishes there when velocities are sampled > 0)."""
     zero = np.zeros_like(truth)
     g_true = rows.values(argv, truth)
     g_zero = rows.values(argv, zero)
@@ -132,4 +143,36 @@ def analyse_rows(rows: CompiledRows, argv: Sequence[np.ndarray], truth: np.ndarr
         rank = min(ranks) if ranks else 0
     else:
         rank = 0
-    return RowAnalysis(consistent, trivial, rank, rows.n, main)
+    vanishing = rank >= rows.n and len(use) == rows.n and (
+        _changes_sign(J[use], reference_jacobian)
+        or (at_rest is not None and rows.linear
+            and _vanishes_at_rest(rows.jacobian(at_rest[0], truth)[use], at_rest[1], J[use], reference_jacobian)))
+    return RowAnalysis(consistent, trivial, rows.n - 1 if vanishing else rank, rows.n, main, vanishing)
+
+
+def _det_ratio(J: np.ndarray, reference: np.ndarray | None) -> np.ndarray:
+    with np.errstate(all="ignore"):
+        ratio = np.linalg.det(J.transpose(2, 0, 1))
+        return ratio if reference is None else ratio / np.linalg.det(reference.transpose(2, 0, 1))
+
+
+def _vanishes_at_rest(J_rest: np.ndarray, reference_rest: np.ndarray | None, J: np.ndarray,
+                      reference: np.ndarray | None) -> bool:
+    """Is the determinant ratio zero (against its size in motion) at some state of rest?"""
+    moving = np.abs(_det_ratio(J, reference))
+    rest = np.abs(_det_ratio(J_rest, reference_rest))
+    moving, rest = moving[np.isfinite(moving)], rest[np.isfinite(rest)]
+    if not moving.size or not rest.size:
+        return False
+    return bool(np.any(rest <= 1e-9 * float(np.median(moving))))
+
+
+def _changes_sign(J: np.ndarray, reference: np.ndarray | None) -> bool:
+    """Does det(J) / det(reference) take both signs over the samples (beyond rounding)? The domain
+    is connected, so by continuity it is zero somewhere in between."""
+    ratio = _det_ratio(J, reference)
+    ratio = ratio[np.isfinite(ratio)]
+    if ratio.size < 2:
+        return False
+    tiny = 1e-9 * float(np.max(np.abs(ratio)))
+    return bool(np.any(ratio > tiny) and np.any(ratio < -tiny))

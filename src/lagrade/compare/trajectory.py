@@ -662,7 +662,7 @@ def _compare_to_reference(student: Rates, ref: Run, y0: np.ndarray, labels: list
     common = dict(seconds=ref.seconds, rhs_evals=ref.rhs_evals, method=method, rtol=acc.rtol, window=window,
                   why_window=why, ftle=float(np.nanmax(amp.ftle)) if amp is not None else None)
     if not ref.ok:
-        common["note"] = f"reference integration failed: {ref.message}"
+        common["note"] = "the true motion could not be followed numerically from these states, so no trajectory comparison"
         return Comparison(False, horizon, **common)
     keep = ref.t <= window + 1e-12
     ref = Run(ref.t[keep], ref.y[..., keep], ref.ok, ref.message, ref.rhs_evals, ref.seconds, ref.method,
@@ -684,4 +684,26 @@ def _compare_to_reference(student: Rates, ref: Run, y0: np.ndarray, labels: list
         comp = int(np.argmax(err[:, :, first_t].max(axis=1)))
         return Comparison(False, horizon, float(ref.t[first_t]), labels[comp], float(err.max()), **common)
     return Comparison(False, horizon, float(stu.t[-1]) if stu.t.size else 0.0, "the motion",
-                      note=f"your equations could not be integrated: {stu.message}", **common)
+                      note=cannot_integrate(student, y0, labels, stu), **common)
+
+
+def cannot_integrate(student: Rates, y0: np.ndarray, labels: list[str], run: Run) -> str:
+    """Why a student's equations cannot be followed, in words (no integrator jargon): undefined
+    accelerations at the initial state (the equations do not determine them: a singular mass
+    matrix, a division by zero), a blow-up, or a motion too fast to follow."""
+    dim, K = y0.shape
+    try:
+        with np.errstate(all="ignore"):
+            f0 = np.asarray(student(0.0, y0), dtype=float).reshape(dim, K)
+    except Exception:  # noqa: BLE001
+        f0 = np.full((dim, K), np.nan)
+    if not np.all(np.isfinite(f0)):
+        return ("your equations cannot be integrated from the initial state: they give no finite acceleration "
+                "there; they do not determine every acceleration (a singular mass matrix) or divide by zero")
+    t = float(run.t[-1]) if run.t.size else 0.0
+    if "singularity" in run.message or "infinite" in run.message:
+        return f"the motion your equations give blows up (becomes infinite) near t = {t:.3g}"
+    if "more than" in run.message and "steps" in run.message:
+        return "the motion your equations give changes too fast to be followed over the time compared"
+    return (f"your equations cannot be integrated beyond t = {t:.3g}: the motion they give becomes infinitely "
+            "fast or undefined there")

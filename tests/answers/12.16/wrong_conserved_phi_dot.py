@@ -1,4 +1,4 @@
-# expect: conserved=incorrect, L=correct, eom=correct
+# expect: conserved=partial, L=correct, eom=correct
 # Says the azimuthal angular velocity phi' is conserved, instead of the angular momentum m*R**2*sin(theta)**2*phi'.
 from lagrade.answer import *
 

@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=partial, conserved=incorrect
+# expect: L=incorrect, eom=partial, conserved=partial
 # Sign of V as if theta were measured from the upward vertical; the theta equation and the energy carry the wrong sign of g.
 from lagrade.answer import *
 

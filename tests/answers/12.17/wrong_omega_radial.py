@@ -1,4 +1,4 @@
-# expect: omega=incorrect, S_t=incorrect
+# expect: omega=partial, S_t=incorrect
 # Radial frequency taken as that of the bare centrifugal barrier with m1 only (missing factor 3 and m1 + m2),
 # and the tension as m2*g (m2 at rest).
 from lagrade.answer import *

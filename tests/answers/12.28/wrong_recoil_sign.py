@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=incorrect, solution=incorrect
+# expect: L=incorrect, eom=incorrect, solution=partial
 # Sign of the cross term wrong (hoop velocity taken as X' - s'*cos(phi) with X along the down-slope projection).
 from lagrade.answer import *
 

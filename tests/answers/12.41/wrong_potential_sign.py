@@ -1,4 +1,4 @@
-# expect: H_a=incorrect, hamilton_a=partial, solution_a=incorrect, H_b=correct, hamilton_b=correct, solution_b=correct
+# expect: H_a=incorrect, hamilton_a=partial, solution_a=partial, H_b=correct, hamilton_b=correct, solution_b=correct
 # y measured up but V = -m*g*y: gravity pulls the projectile upward.
 from lagrade.answer import *
 

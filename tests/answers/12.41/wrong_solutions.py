@@ -1,4 +1,4 @@
-# expect: H_a=correct, hamilton_a=correct, solution_a=incorrect, H_b=correct, hamilton_b=correct, solution_b=incorrect
+# expect: H_a=correct, hamilton_a=correct, solution_a=partial, H_b=correct, hamilton_b=correct, solution_b=incorrect
 # Missing 1/2 in the free-fall term; small-amplitude pendulum with frequency g/l instead of sqrt(g/l) and sin for cos.
 from lagrade.answer import *
 

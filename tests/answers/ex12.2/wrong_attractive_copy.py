@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=partial, Q=partial, conserved=incorrect, bound_orbits=incorrect
+# expect: L=incorrect, eom=partial, Q=partial, conserved=partial, bound_orbits=incorrect
 # The example's attractive case copied: V = -k/r, so the radial force has the wrong sign everywhere.
 from sympy import Eq, Function, symbols
 

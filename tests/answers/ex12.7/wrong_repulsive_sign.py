@@ -1,4 +1,4 @@
-# expect: H=incorrect, hamilton=partial, cyclic=correct, conserved=incorrect
+# expect: H=incorrect, hamilton=partial, cyclic=correct, conserved=partial
 # Sign of V flipped (V = +k/r): the force on the particle points away from the centre.
 from lagrade.answer import *
 
