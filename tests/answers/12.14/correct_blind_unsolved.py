@@ -1,0 +1,15 @@
+from lagrade.answer import *
+
+m1, m2, l1, l2, g = parameters("m1 m2 l1 l2 g")
+theta1, theta2 = coordinates("theta1 theta2")
+w1, w2 = dot(theta1), dot(theta2)
+L = ((m1 + m2)*l1**2*w1**2/2 + m2*l2**2*w2**2/2 + m2*l1*l2*w1*w2*cos(theta1 - theta2)
+     + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2))
+eom = [Eq((m1 + m2)*l1*dot(theta1, 2) + m2*l2*dot(theta2, 2), -(m1 + m2)*g*theta1),
+       Eq(l1*dot(theta1, 2) + l2*dot(theta2, 2), -g*theta2)]
+eom_exact = [(m1 + m2)*l1*dot(theta1, 2) + m2*l2*cos(theta1 - theta2)*dot(theta2, 2)
+             + m2*l2*sin(theta1 - theta2)*w2**2 + (m1 + m2)*g*sin(theta1),
+             l2*dot(theta2, 2) + l1*cos(theta1 - theta2)*dot(theta1, 2) - l1*sin(theta1 - theta2)*w1**2 + g*sin(theta2)]
+s = (m1 + m2)*g*(l1 + l2)
+d = sqrt(s**2 - 4*m1*l1*l2*(m1 + m2)*g**2)
+omega = [sqrt((s + d)/(2*m1*l1*l2)), sqrt((s - d)/(2*m1*l1*l2))]

@@ -1,0 +1,10 @@
+from lagrade.answer import *
+
+m1, m2, l, g = parameters("m1 m2 l g")
+r0, v0 = symbols("r0 v0")
+r = coordinates("r")
+L = (m1 + m2)*dot(r)**2/2 - m2*g*r          # + m2*g*l dropped (a constant)
+eom = [Eq((m1 + m2)*dot(r, 2), -m2*g)]
+a = -m2*g/(m1 + m2)
+S_t = m1*m2*g/(m1 + m2)
+solution = {r: r0 + v0*t + a*t**2/2}

@@ -1,0 +1,8 @@
+# expect: L=correct, eom=correct, a=incorrect
+from lagrade.answer import *
+
+m1, m2, M, R, g, l = parameters("m1 m2 M R g l")
+x = coordinates("x")
+L = (m1 + m2 + M/2)*dot(x)**2/2 + m2*g*x
+eom = [(m1 + m2 + M/2)*dot(x, 2) - m2*g]
+a = m2*g/(m1 + m2 + M/4)

@@ -1,0 +1,10 @@
+from lagrade.answer import *
+
+m, k = parameters("m k")
+x0, v0 = symbols("x0 v0")
+x = coordinates("x")
+p_x = momenta("p_x")
+H = p_x**2/(2*m) + k*x**2/2
+hamilton = [Eq(dot(x), p_x/m), Eq(p_x.diff(t), -k*x)]
+omega = sqrt(k/m)
+solution = {Symbol("x"): x0*cos(omega*t) + v0*sin(omega*t)/omega}

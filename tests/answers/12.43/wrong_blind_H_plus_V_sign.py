@@ -1,0 +1,9 @@
+# expect: H=incorrect, eom=incorrect
+from lagrade.answer import *
+
+m, l, g = parameters("m l g")
+theta = coordinates("theta")
+p_theta = momenta("p_theta")
+H = p_theta**2/(2*m*l**2) + m*g*l*cos(theta)
+hamilton = [Eq(dot(theta), p_theta/(m*l**2)), Eq(p_theta.diff(t), m*g*l*sin(theta))]
+eom = [Eq(dot(theta, 2), g/l*sin(theta))]

@@ -1,0 +1,7 @@
+from lagrade.answer import *
+
+m, k, eps = parameters("m k eps")
+x = coordinates("x")
+p_x = momenta("p_x")
+H = p_x**2/(2*m) + Rational(1, 2)*k*x**2 + Rational(1, 4)*eps*x**4
+hamilton = [Eq(dot(x), p_x/m), Eq(p_x.diff(t), -k*x - eps*x**3)]

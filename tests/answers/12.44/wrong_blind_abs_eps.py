@@ -1,0 +1,9 @@
+# expect: H=incorrect
+from lagrade.answer import *
+
+m, k, eps = parameters("m k eps")
+x = coordinates("x")
+p_x = momenta("p_x")
+# treated the quartic term as a stiffening spring whatever the sign of eps
+H = p_x**2/(2*m) + k*x**2/2 + Abs(eps)*x**4/4
+hamilton = [Eq(dot(x), p_x/m), Eq(p_x.diff(t), -k*x - Abs(eps)*x**3)]

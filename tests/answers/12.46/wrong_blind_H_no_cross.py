@@ -1,0 +1,11 @@
+# expect: L=correct, H=incorrect, cyclic=correct, conserved=correct, omega=correct
+from lagrade.answer import *
+
+m, M, l, g = parameters("m M l g")
+X, theta = coordinates("X theta")
+p_X, p_theta = symbols("p_X p_theta")
+L = (M + m)*dot(X)**2/2 + m*l*cos(theta)*dot(X)*dot(theta) + m*l**2*dot(theta)**2/2 + m*g*l*cos(theta)
+H = p_X**2/(2*(M + m)) + p_theta**2/(2*m*l**2) - m*g*l*cos(theta)
+cyclic = ["X"]
+conserved = [(M + m)*dot(X) + m*l*cos(theta)*dot(theta)]
+omega = sqrt((M + m)*g/(M*l))

@@ -1,0 +1,11 @@
+# expect: L=correct, H=correct, cyclic=correct, conserved=correct, omega=incorrect
+from lagrade.answer import *
+
+m, M, l, g = parameters("m M l g")
+X, theta = coordinates("X theta")
+p_X, p_theta = momenta("p_X p_theta")
+L = (M + m)*dot(X)**2/2 + m*l*cos(theta)*dot(X)*dot(theta) + m*l**2*dot(theta)**2/2 + m*g*l*cos(theta)
+H = (m*l**2*p_X**2 - 2*m*l*cos(theta)*p_X*p_theta + (M + m)*p_theta**2)/(2*m*l**2*(M + m*sin(theta)**2)) - m*g*l*cos(theta)
+cyclic = [X]
+conserved = [p_X]
+omega = sqrt(g*M/((M + m)*l))

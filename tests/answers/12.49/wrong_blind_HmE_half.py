@@ -1,0 +1,15 @@
+# expect: L=correct, H=correct, hamilton=correct, H_minus_E=incorrect, H_conserved=correct, H_is_E=correct, E_conserved=correct, dE_dt=correct
+from lagrade.answer import *
+
+m, l0, k, g = parameters("m l0 k g")
+theta = coordinates("theta")
+p_theta = momenta("p_theta")
+ell = l0 - k*t
+L = m*(k**2 + ell**2*dot(theta)**2)/2 + m*g*ell*cos(theta)
+H = p_theta**2/(2*m*ell**2) - m*k**2/2 - m*g*ell*cos(theta)
+hamilton = [Eq(dot(theta), p_theta/(m*ell**2)), Eq(p_theta.diff(t), -m*g*ell*sin(theta))]
+H_minus_E = -m*k**2/2
+H_conserved = False
+H_is_E = False
+E_conserved = False
+dE_dt = m*k*(ell*dot(theta)**2 + g*cos(theta))
