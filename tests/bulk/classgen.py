@@ -223,7 +223,7 @@ EXPECTED_SKIPS = {  # path -> a word the reason must contain
 
 def assignment_toml(problems: list[str] = FAST_PROBLEMS, *, name: str = "hw7", accuracy: str = "default",
                     cpu: float = 1, wall: float = 4, memory_mb: int = 300, weights: dict | None = None) -> str:
-    lines = [f'name = "{name}"', f'title = "Homework 7"', f'accuracy = "{accuracy}"', "",
+    lines = [f'name = "{name}"', 'title = "Homework 7"', f'accuracy = "{accuracy}"', "",
              "[limits]", f"cpu_seconds = {cpu}", f"wall_seconds = {wall}", f"memory_mb = {memory_mb}",
              "grading_seconds = 60", ""]
     for pid in problems:

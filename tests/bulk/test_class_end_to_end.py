@@ -11,7 +11,7 @@ from click.testing import CliRunner
 from conftest import assert_expected, stored
 
 import classgen
-from lagrade.cli_bulk import export, grade, report
+from lagrade.cli.bulk import export, grade, report
 
 
 def test_class_of_232_submissions(tmp_path, sentinel):
@@ -43,7 +43,7 @@ def test_class_of_232_submissions(tmp_path, sentinel):
     # run again: nothing is graded twice
     res = runner.invoke(grade, [str(root), "--assignment", str(hw), "--db", str(db), "--no-summary"])
     assert res.exit_code == 0, res.output
-    assert f"0 graded now" in res.output and f"{len(expected)} unchanged" in res.output
+    assert "0 graded now" in res.output and f"{len(expected)} unchanged" in res.output
     assert con.execute("SELECT count(*) FROM grade_log").fetchone()[0] == len(expected)
 
     # exports agree with the construction
@@ -68,7 +68,11 @@ def test_class_of_232_submissions(tmp_path, sentinel):
     gs = json.loads(res.output)
     assert abs(gs["score"] - per_student["s005"]) < 1e-3
     assert abs(sum(t["score"] for t in gs["tests"]) - gs["score"]) < 1e-3
-    assert all(set(t) == {"name", "score", "max_score", "output", "visibility"} for t in gs["tests"])
+    assert all(set(t) == {"name", "number", "score", "max_score", "status", "output", "tags", "visibility"}
+               for t in gs["tests"])
+    import jsonschema
+
+    jsonschema.validate(gs, json.loads((classgen.REPO / "tests/deploy/gradescope_results.schema.json").read_text()))
 
     res = runner.invoke(report, [str(db), "--html", str(tmp_path / "report")])
     assert res.exit_code == 0, res.output

@@ -9,7 +9,7 @@ from conftest import assert_expected, stored
 import classgen
 from lagrade.bulk.assignment import load_assignment
 from lagrade.bulk.runner import grade_folder
-from lagrade.cli_bulk import grade
+from lagrade.cli.bulk import grade
 
 distributed = pytest.importorskip("distributed", reason="the dask extra is not installed (pip install lagrade[dask])")
 

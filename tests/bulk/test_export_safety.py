@@ -18,7 +18,7 @@ from click.testing import CliRunner
 
 import classgen
 from lagrade.bulk.exports import FORMULA_STARTS, spreadsheet_safe
-from lagrade.cli_bulk import export, grade, report
+from lagrade.cli.bulk import export, grade, report
 
 REPO = classgen.REPO
 FORMULAS = ["=cmd|' -C calc'!A0", "+1", "-2", "@SUM(A1)"]
@@ -93,14 +93,14 @@ def test_every_csv_export_writes_formula_names_as_text(graded):
     assert ["Hara, O", "'=1+1", "'-S1", "o'hara", "'@A", "3"] in _rows(outputs["canvas --roster"])
 
     plain = _rows(outputs["csv"])
-    assert plain[0] == ["student", "12.43", "total", "possible", "12.43 status", "jail"]
+    assert plain[0] == ["student", "12.43", "total", "possible", "12.43 status", "jail", "overrides"]
     by_student = {r[0]: r for r in plain[1:]}
     assert set(by_student) == {"'" + s for s in FORMULAS} | set(HONEST) | {"'=cmd|' "}
     for student in FORMULAS + HONEST:
         row = by_student[spreadsheet_safe(student)]
         assert row[1:5] == ["3", "3", "3", "graded"], row  # numbers stay numbers
         assert row[5], "the jail the grader reported"
-    assert by_student["'=cmd|' "][1:] == ["0", "0", "3", "missing", ""]
+    assert by_student["'=cmd|' "][1:] == ["0", "0", "3", "missing", "", ""]
 
     skipped = {r[0]: r[1] for r in _rows(outputs["skipped"])[1:]}
     assert skipped["'" + DDE] == "a folder inside a student folder (expected <student>/<problem-id>.py)"

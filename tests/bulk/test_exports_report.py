@@ -7,7 +7,6 @@ import re
 import shutil
 import sqlite3
 import subprocess
-from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -15,7 +14,7 @@ from click.testing import CliRunner
 import classgen
 from lagrade.bulk.assignment import AssignmentError, parse_assignment, points
 from lagrade.bulk.html_report import slug
-from lagrade.cli_bulk import export, grade, gradescope, report
+from lagrade.cli.bulk import export, grade, gradescope, report
 
 REPO = classgen.REPO
 
@@ -65,8 +64,10 @@ def test_exports(graded):
     roster = tmp / "roster.csv"
     roster.write_text("Student,ID,SIS User ID,SIS Login ID,Section\nPoints Possible,,,,\n"
                       "\"Lovelace, Ada\",101,S1,ada,A\n")
-    canvas = runner.invoke(export, [str(db), "--roster", str(roster)]).output.splitlines()
-    assert canvas[2] == '"Lovelace, Ada",101,S1,ada,A,8'
+    res = runner.invoke(export, [str(db), "--roster", str(roster)])
+    canvas = res.stdout.splitlines()
+    assert canvas[2:] == ['"Lovelace, Ada",101,S1,ada,A,8']  # only the roster's students reach Canvas
+    assert "2 student folders are on no row" in res.stderr and res.stderr.rstrip().endswith(": bob, cy <z>")
     assert "skipped" not in runner.invoke(export, [str(db), "--format", "csv"]).output
     assert "bob/essay.docx" in runner.invoke(export, [str(db), "--format", "skipped"]).output
     res = runner.invoke(export, [str(db), "--format", "gradescope"])

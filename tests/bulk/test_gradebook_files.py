@@ -16,7 +16,7 @@ from click.testing import CliRunner
 
 import classgen
 from lagrade.bulk.store import Key, Store
-from lagrade.cli_bulk import export, grade, report
+from lagrade.cli.bulk import export, grade, report
 
 REPO = classgen.REPO
 KINDS = ["text", "random bytes", "truncated", "directory", "another program's database", "unreadable"]

@@ -18,7 +18,7 @@ from lagrade.bulk.assignment import load_assignment
 from lagrade.bulk.runner import grade_folder
 from lagrade.bulk.worker import _ORPHAN
 
-GRADE = "import sys; from lagrade.cli_bulk import grade; grade(sys.argv[1:])"
+GRADE = "import sys; from lagrade.cli.bulk import grade; grade(sys.argv[1:])"
 
 
 def _count(db: Path, table: str) -> int:

@@ -21,6 +21,18 @@ weight = 5                         # points for this problem (default: the probl
 parts = { L = 2, eom = 1 }         # optional relative weights of parts (default: the problem file's)
 ```
 
+Optional, for the LMS (none of it changes a grade, so none of it regrades):
+
+```toml
+canvas_assignment_id = 4411        # the Canvas export fills the column "Homework 7 (4411)"
+
+[gradescope]                       # results.json of the Gradescope autograder
+visibility = "visible"             # the whole result: visible | hidden | after_due_date | after_published
+tests_visibility = "visible"       # each test (one per part); "hidden" hides them from students
+stdout_visibility = "hidden"       # the autograder's stdout
+output_format = "md"               # md | html | text
+```
+
 A student's points on a problem are ``weight * sum(w_part * fraction_part) / sum(w_part)``, where
 ``fraction_part`` is the engine's score of the part over its maximum.  Weights only change the
 points, never the grading, so changing them does not regrade anything.
@@ -76,11 +88,28 @@ class AssignedProblem(BaseModel):
         return self
 
 
+Visibility = Literal["visible", "hidden", "after_due_date", "after_published"]
+
+
+class GradescopeOptions(BaseModel):
+    """How Gradescope shows the autograder's results (its ``visibility`` values, its ``output_format``)."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    visibility: Visibility = "visible"
+    tests_visibility: Visibility = "visible"
+    stdout_visibility: Visibility = "hidden"
+    output_format: Literal["md", "html", "text"] = "md"
+
+
 class Assignment(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
     name: str = "assignment"
     title: str = ""
+    #: Canvas's id of the assignment: the export then fills that column instead of making a new one
+    canvas_assignment_id: int | None = Field(None, ge=0)
+    gradescope: GradescopeOptions = GradescopeOptions()
     accuracy: Literal["fast", "default", "strict"] = "default"
     limits: Limits = Limits()
     #: partial-credit policy (lagrade.credit.Credit); the defaults are documented in docs/answers.md
@@ -175,3 +204,36 @@ def points(assigned: AssignedProblem, parts: list[dict], default_total: float) -
         return 0.0, total
     frac = sum(weights[p["part"]] * (p["score"] / p["max_score"] if p["max_score"] else 0.0) for p in parts)
     return round(total * frac / denom, 6), total
+
+
+#: the precision, in points, of the per-part points the exports show (Gradescope's tests, the report)
+POINT_UNITS = 10_000
+
+
+def split_points(total: float, weights: list[float]) -> list[float]:
+    """``total`` shared in proportion to ``weights``, each share a multiple of 1/POINT_UNITS, the shares
+    summing exactly to ``total`` rounded to that precision (largest remainders: never 9.999999 of 10)."""
+    units = round(total * POINT_UNITS)
+    denom = sum(weights)
+    if not weights:
+        return []
+    if denom <= 0:
+        weights, denom = [1.0] * len(weights), float(len(weights))
+    raw = [units * w / denom for w in weights]
+    shares = [int(r) for r in raw]
+    order = sorted(range(len(raw)), key=lambda i: (shares[i] - raw[i], i))
+    for i in order[: units - sum(shares)]:
+        shares[i] += 1
+    return [s / POINT_UNITS for s in shares]
+
+
+def part_points(assigned: AssignedProblem, parts: list[dict], default_total: float) -> list[tuple[float, float]]:
+    """(points earned, points possible) of each stored part, in the order given, with the weights that
+    :func:`points` uses; the possible points sum exactly to the problem's points (see :func:`split_points`)."""
+    total = assigned.weight if assigned.weight is not None else default_total
+    weights = [assigned.parts.get(p["part"], p["max_score"]) for p in parts]
+    out = []
+    for p, share in zip(parts, split_points(total, weights)):
+        frac = p["score"] / p["max_score"] if p["max_score"] else 0.0
+        out.append((round(share * min(1.0, max(0.0, frac)) * POINT_UNITS) / POINT_UNITS, share))
+    return out

@@ -1,11 +1,14 @@
 """Gradebook exports: Canvas import CSV, a plain CSV, Gradescope's ``results.json``, skipped files.
 
 Canvas: the columns of Canvas's own gradebook export (``Student,ID,SIS User ID,SIS Login ID,Section``)
-then one column named after the assignment, with the ``Points Possible`` row first. Canvas matches
-rows on ``ID``/``SIS User ID``/``SIS Login ID``; without a roster the student folder name goes in
-``SIS Login ID``. With ``--roster`` (a Canvas gradebook export) each folder name is looked up in
-the roster's ``SIS Login ID``, ``SIS User ID``, ``ID`` or ``Student`` column, and the roster's
-identifiers are used.
+then one column for the assignment, with the ``Points Possible`` row first. The column is named
+``Title (canvas id)`` when the assignment file gives ``canvas_assignment_id``: Canvas then fills its
+existing assignment instead of making a new column. Canvas matches rows on ``ID``/``SIS User
+ID``/``SIS Login ID``; without a roster the student folder name goes in ``SIS Login ID``. With
+``--roster`` (a Canvas gradebook export) each folder name is looked up in the roster's ``SIS Login
+ID``, ``SIS User ID``, ``ID`` or ``Student`` column, the roster's identifiers are used, every roster
+student gets a row (0 points without a folder, or an empty cell), and folders on no roster row are
+reported.
 
 Every text cell of every CSV export goes through :func:`spreadsheet_safe`: student folder names,
 roster ids, paths and reasons are chosen by students, and a spreadsheet runs a cell that begins
@@ -18,6 +21,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import re
 from collections.abc import Iterable
 from pathlib import Path
 
@@ -61,6 +65,8 @@ def read_roster(path: Path) -> dict[str, dict[str, str]]:
     """Folder name -> the roster row that names it (in any identifier column)."""
     with open(path, newline="", encoding="utf-8-sig") as fh:
         rows = [r for r in csv.DictReader(fh) if (r.get("Student") or "").strip() not in ("", "Points Possible")]
+    for i, r in enumerate(rows):
+        r["_row"] = i  # the roster's order, for the export
     out: dict[str, dict[str, str]] = {}
     for col in ("Student", "ID", "SIS User ID", "SIS Login ID"):  # later columns win: the most specific ids
         for r in rows:
@@ -69,12 +75,56 @@ def read_roster(path: Path) -> dict[str, dict[str, str]]:
     return out
 
 
-def canvas_csv(book: Gradebook, roster: dict[str, dict[str, str]] | None = None) -> str:
-    rows = [CANVAS_ID_COLUMNS + [book.assignment.name], ["Points Possible", "", "", "", "", book.possible]]
+def roster_rows(roster: dict[str, dict[str, str]]) -> list[dict[str, str]]:
+    """The roster's students, once each, in the roster's order."""
+    seen: dict[int, dict[str, str]] = {}
+    for r in roster.values():
+        seen.setdefault(id(r), r)
+    return sorted(seen.values(), key=lambda r: r.get("_row", 0))
+
+
+def canvas_column(book: Gradebook) -> str:
+    """The assignment's column: ``Title (canvas id)`` fills Canvas's existing column, a bare name
+    makes a new one."""
+    a = book.assignment
+    if a.canvas_assignment_id is not None:
+        return f"{a.title or a.name} ({a.canvas_assignment_id})"
+    return a.name
+
+
+def not_on_roster(book: Gradebook, roster: dict[str, dict[str, str]]) -> list[str]:
+    """Student folders whose grades do not reach Canvas: no roster row names them, or their row is
+    already another folder's (``ada`` and ``101`` for the same student: the first one counts)."""
+    taken: set[int] = set()
+    out = []
     for s in book.students:
-        r = (roster or {}).get(s.student)
-        ids = [r.get(c) or "" for c in CANVAS_ID_COLUMNS] if r else [s.student, "", "", s.student, ""]
-        rows.append(ids + [s.points])
+        r = roster.get(s.student)
+        if r is None or id(r) in taken:
+            out.append(s.student)
+        else:
+            taken.add(id(r))
+    return out
+
+
+def canvas_csv(book: Gradebook, roster: dict[str, dict[str, str]] | None = None, *,
+               missing: float | None = 0.0) -> str:
+    """Canvas's gradebook import. With a roster: one row per roster student, Canvas's ids from the
+    roster, ``missing`` points (None: an empty cell, which leaves Canvas's grade as it is) for a
+    student with no folder; folders not on the roster are left out (see :func:`not_on_roster`)."""
+    rows = [CANVAS_ID_COLUMNS + [canvas_column(book)], ["Points Possible", "", "", "", "", book.possible]]
+    if roster is None:
+        for s in book.students:
+            rows.append([s.student, "", "", s.student, "", s.points])
+        return _csv(rows)
+    by_row = {}
+    for s in book.students:
+        r = roster.get(s.student)
+        if r is not None:
+            by_row.setdefault(id(r), s)
+    for r in roster_rows(roster):
+        s = by_row.get(id(r))
+        points = s.points if s is not None else ("" if missing is None else missing)
+        rows.append([r.get(c) or "" for c in CANVAS_ID_COLUMNS] + [points])
     return _csv(rows)
 
 
@@ -83,44 +133,121 @@ def file_jail(g: ProblemGrade) -> str | None:
     return next((p["jail"] for p in g.parts if p.get("jail")), None)
 
 
+def overrides_of(s: StudentGrade) -> list[str]:
+    """``12.3 eom = 1 / 1 (reason)`` for each part of ``s`` whose score an instructor set."""
+    return [f"{pid} {p['part']} = {_fmt(p['score'])} / {_fmt(p['max_score'])} ({p['override']['reason']})"
+            for pid, g in s.problems.items() for p in g.parts if p.get("override")]
+
+
 def plain_csv(book: Gradebook) -> str:
-    """One row per student; ``jail``: the sandbox layers of their files (each distinct one, ``; ``)."""
+    """One row per student; ``jail``: the sandbox layers of their files (each distinct one, ``; ``);
+    ``overrides``: the parts whose score an instructor set (``lagrade override``), with the reason."""
     pids = book.assignment.ids
-    rows = [["student", *pids, "total", "possible", *(f"{p} status" for p in pids), "jail"]]
+    rows = [["student", *pids, "total", "possible", *(f"{p} status" for p in pids), "jail", "overrides"]]
     for s in book.students:
         g = s.problems
         jails = dict.fromkeys(j for p in pids if (j := file_jail(g[p])))
         rows.append([s.student, *(g[p].points for p in pids), s.points, s.possible,
                      *(g[p].outcome if g[p].outcome != "failed" else f"failed: {g[p].status}" for p in pids),
-                     "; ".join(jails)])
+                     "; ".join(jails), "; ".join(overrides_of(s))])
     return _csv(rows)
 
 
-def gradescope_results(book: Gradebook, student: StudentGrade) -> dict:
-    """Gradescope's autograder ``results.json`` for one student: one test per problem part."""
-    tests = []
-    lines = [f"{book.assignment.title or book.assignment.name}: {_fmt(student.points)} / {_fmt(student.possible)}"]
-    for pid, g in student.problems.items():
-        lines.append(f"Problem {pid}: {_fmt(g.points)} / {_fmt(g.possible)}" +
-                     ("" if g.outcome == "graded" else f" ({g.reason})"))
-        if not g.submitted:
-            tests.append({"name": f"{pid}", "score": 0.0, "max_score": g.possible,
-                          "output": f"No file {pid}.py or {pid}.toml was handed in.", "visibility": "visible"})
-            continue
+#: Gradescope's test ``status``: a part is "passed" only when it earned all its points
+def _status(earned: float, possible: float) -> str:
+    return "passed" if earned >= possible else "failed"
+
+
+def feedback_text(p: dict) -> str:
+    """The part's feedback without its verdict repeated in front ("correct: correct: ..." reads badly)."""
+    text = (p.get("feedback") or "").strip()
+    verdict = p.get("verdict") or ""
+    while verdict and text.lower().startswith(verdict.lower() + ":"):
+        text = text[len(verdict) + 1:].lstrip()
+    return text
+
+
+_FUNCS = {"sin", "cos", "tan", "exp", "log", "sqrt", "sinh", "cosh", "tanh", "asin", "acos", "atan", "Abs"}
+
+
+def readable(text: str) -> str:
+    """An answer as sympy prints it, as a physicist writes it in plain text: ``x'`` for
+    ``Derivative(x(t), t)``, ``x''`` for the second, ``x`` for ``x(t)``, ``^`` for ``**``."""
+    text = re.sub(r"Derivative\((\w+)\(t\), \(t, (\d)\)\)", lambda m: m[1] + "'" * int(m[2]), text)
+    text = re.sub(r"Derivative\((\w+)\(t\), t\)", r"\1'", text)
+    text = re.sub(r"\b(\w+)\(t\)", lambda m: m[0] if m[1] in _FUNCS else m[1], text)
+    return text.replace("**", "^")
+
+
+def gradescope_results(book: Gradebook, student: StudentGrade, *, execution_time: float | None = None) -> dict:
+    """Gradescope's autograder ``results.json`` for one student (Gradescope's "Autograder Specifications").
+
+    One test per problem part, its ``max_score`` the part's share of the problem's points with the
+    assignment's weights; the shares are multiples of 1/10000 that sum exactly to the assignment's
+    total, and ``score`` is the sum of the tests' scores. The assignment's ``[gradescope]`` options give
+    the visibilities and the output format; a message shared by every part of a problem (a file that
+    could not be graded) is said once, in the first part's test."""
+    from lagrade.bulk.assignment import POINT_UNITS, part_points, split_points
+
+    opts = book.assignment.gradescope
+    html = opts.output_format == "html"
+    tests: list[dict] = []
+    units = 0
+    per_problem: list[tuple[str, float, float, str]] = []
+    for n, (pid, g) in enumerate(student.problems.items(), start=1):
         ap = book.assignment.problem(pid)
-        weights = {p["part"]: ap.parts.get(p["part"], p["max_score"]) for p in g.parts}
-        denom = sum(weights.values()) or 1.0
-        for p in g.parts:
-            share = g.possible * weights[p["part"]] / denom
-            frac = p["score"] / p["max_score"] if p["max_score"] else 0.0
-            out = f"{p['verdict']}: {p['feedback']}"
-            if p.get("answer_text"):
-                out += f"\nread as: {p['answer_text']}"
-            tests.append({"name": f"{pid} {p['part']}", "score": round(share * frac, 6), "max_score": round(share, 6),
-                          "output": out, "visibility": "visible"})
-        for problem in g.problems:
-            lines.append(f"  {problem}")
-    return {"score": student.points, "output": "\n".join(lines), "tests": tests}
+        if not g.submitted or not g.parts:
+            why = g.reason if g.submitted else f"No file {pid}.py or {pid}.toml was handed in."
+            share = split_points(g.possible, [1.0])[0]
+            tests.append({"name": f"{pid}", "number": f"{n}", "score": 0.0, "max_score": share, "status": "failed",
+                          "output": why, "tags": [pid], "visibility": opts.tests_visibility})
+            per_problem.append((pid, 0.0, share, "not handed in" if not g.submitted else g.reason))
+            continue
+        # a file that could not be used: every part carries the same reason, said once
+        shared = (len(g.parts) > 1 and len({(feedback_text(p), p["verdict"]) for p in g.parts}) == 1
+                  and g.parts[0]["verdict"] != "correct")
+        earned_total = 0.0
+        for m, (p, (earned, possible)) in enumerate(zip(g.parts, part_points(ap, g.parts, g.possible)), start=1):
+            text = feedback_text(p)
+            if shared and m > 1:
+                text = f"See {pid} {g.parts[0]['part']}."
+            if p.get("override"):
+                text = f"Score set by the instructor: {p['override']['reason']}" + (f"\n{text}" if text else "")
+            elif p.get("answer_text") and not (shared and m > 1):
+                read = (f"<math>{p['answer_mathml']}</math>" if html and p.get("answer_mathml")
+                        else f"`{readable(p['answer_text'])}`" if opts.output_format == "md"
+                        else readable(p["answer_text"]))
+                text += f"\n\nRead as: {read}"
+            units += round(earned * POINT_UNITS)
+            earned_total += earned
+            tests.append({"name": f"{pid} {p['part']}", "number": f"{n}.{m}", "score": earned, "max_score": possible,
+                          "status": _status(earned, possible), "output": text,
+                          "tags": [pid, p["part"], p["verdict"]], "visibility": opts.tests_visibility})
+        per_problem.append((pid, round(earned_total, 4), g.possible, g.reason if g.outcome == "failed" else ""))
+    score = units / POINT_UNITS
+    title = book.assignment.title or book.assignment.name
+    total = _fmt(sum(t["max_score"] for t in tests))
+    if html:
+        from html import escape
+
+        rows = "".join(f"<tr><td>{escape(pid)}</td><td>{_fmt(e)} / {_fmt(m)}</td><td>{escape(why)}</td></tr>"
+                       for pid, e, m, why in per_problem)
+        output = (f"<p><strong>{escape(title)}</strong>: {_fmt(score)} / {total}</p>"
+                  f"<table><tr><th>problem</th><th>points</th><th></th></tr>{rows}</table>")
+    elif opts.output_format == "md":
+        output = "\n".join([f"**{title}**: {_fmt(score)} / {total}", "", "| problem | points | |", "|---|---|---|",
+                            *(f"| {pid} | {_fmt(e)} / {_fmt(m)} | {why.replace('|', '/')} |"
+                              for pid, e, m, why in per_problem)])
+    else:
+        output = "\n".join([f"{title}: {_fmt(score)} / {total}",
+                            *(f"Problem {pid}: {_fmt(e)} / {_fmt(m)}" + (f" ({why})" if why else "")
+                              for pid, e, m, why in per_problem)])
+    out = {"score": score, "output": output, "output_format": opts.output_format,
+           "test_output_format": opts.output_format, "visibility": opts.visibility,
+           "stdout_visibility": opts.stdout_visibility, "tests": tests}
+    if execution_time is not None:
+        out["execution_time"] = max(0, round(execution_time))
+    return out
 
 
 def gradescope_json(book: Gradebook, student: str | None = None) -> str:

@@ -16,22 +16,46 @@ from collections import Counter
 from html import escape
 from pathlib import Path
 
-from lagrade.bulk.exports import file_jail
+from lagrade.bulk.assignment import part_points
+from lagrade.bulk.exports import feedback_text, file_jail, overrides_of
 from lagrade.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
 from lagrade.bulk.summary import common_mistakes, common_wrong_answers, failure_counts, problem_stats
 
 CSS = """
+*, *::before, *::after { box-sizing: border-box; }
 body { font: 15px/1.45 system-ui, sans-serif; margin: 2em auto; max-width: 70em; padding: 0 1em; color: #222; }
-h1, h2, h3 { line-height: 1.2; } table { border-collapse: collapse; margin: .5em 0 1.5em; }
+h1, h2, h3 { line-height: 1.2; overflow-wrap: anywhere; }
+table { border-collapse: collapse; margin: .5em 0 1.5em; }
 th, td { border-bottom: 1px solid #ddd; padding: .3em .6em; text-align: left; vertical-align: top; }
 th { background: #f4f4f4; cursor: default; } th.sortable { cursor: pointer; }
-.num { text-align: right; font-variant-numeric: tabular-nums; }
+.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 .correct { color: #166534; } .partial { color: #92400e; } .incorrect, .invalid, .failed { color: #b91c1c; }
 .missing { color: #6b7280; } .problems { display: flex; flex-wrap: wrap; gap: 1.5em; }
-.card { border: 1px solid #ddd; border-radius: 6px; padding: .8em 1em; min-width: 20em; }
-svg text { font: 11px system-ui, sans-serif; fill: #333; } svg rect.bar { fill: #3b82f6; }
+.card { border: 1px solid #ddd; border-radius: 6px; padding: .8em 1em; min-width: min(20em, 100%); max-width: 100%; }
+svg text { font: 11px system-ui, sans-serif; fill: #333; } svg rect.bar { fill: #3b82f6; } svg { max-width: 100%; height: auto; }
 pre { background: #f6f8fa; padding: .8em; overflow-x: auto; font-size: 13px; }
 math { font-size: 1.1em; } .muted { color: #6b7280; } a { color: #1d4ed8; }
+.scroll { overflow-x: auto; max-width: 100%; }
+#wrong-answers { width: 100%; table-layout: fixed; } #wrong-answers col.c-problem { width: 5.5em; }
+#wrong-answers col.c-part { width: 6em; } #wrong-answers col.c-count { width: 6em; }
+td code { overflow-wrap: anywhere; } td { overflow-wrap: anywhere; }
+td > .formula { display: block; overflow-x: auto; max-width: 100%; padding-bottom: .2em; }
+table.parts { width: 100%; table-layout: fixed; }
+table.parts col.c-part { width: 6em; } table.parts col.c-verdict { width: 8em; }
+table.parts col.c-points { width: 8em; } table.parts col.c-answer { width: 38%; }
+table.parts td.answer > .formula { display: block; overflow-x: auto; max-width: 100%; padding-bottom: .2em; }
+table.parts td.feedback { overflow-wrap: anywhere; }
+.override { background: #fef9c3; } .why { display: block; font-size: .9em; color: #854d0e; }
+.note { border-left: 4px solid #b91c1c; padding: .3em .8em; background: #fef2f2; }
+@media (max-width: 700px) {
+  body { margin: 1em auto; padding: 0 .6em; font-size: 14px; }
+  table.parts, table.parts tbody, table.parts tr, table.parts td { display: block; width: 100%; }
+  table.parts colgroup, table.parts thead { display: none; }
+  table.parts tr { border: 1px solid #ddd; border-radius: 6px; margin: 0 0 .8em; padding: .3em 0; }
+  table.parts td { border: 0; padding: .2em .6em; text-align: left; }
+  table.parts td[data-label]::before { content: attr(data-label) ": "; font-weight: 600; color: #444; }
+  table.parts td.answer::before { display: block; }
+}
 """
 
 # The first script of every page: collects errors so that a headless browser can report them.
@@ -63,6 +87,9 @@ document.querySelectorAll('table.sortable').forEach(function (table) {
     });
   });
 });
+// How wide the page is laid out: wider than the window means a sideways scroll (a test reads it).
+document.body.setAttribute('data-page-width', String(document.documentElement.scrollWidth));
+document.body.setAttribute('data-window-width', String(window.innerWidth));
 document.body.setAttribute('data-scripts', 'ran');"""
 
 
@@ -144,9 +171,10 @@ def _index(book: Gradebook) -> str:
     out.append("</div>")
     wrong = common_wrong_answers(book, 12)
     if wrong:
-        out.append("<h2>Most common wrong answers</h2><table id=\"wrong-answers\"><thead><tr><th>problem</th>"
+        out.append("<h2>Most common wrong answers</h2><table id=\"wrong-answers\"><colgroup><col class=\"c-problem\">"
+                   "<col class=\"c-part\"><col><col class=\"c-count\"></colgroup><thead><tr><th>problem</th>"
                    "<th>part</th><th>answer</th><th class=\"num\">students</th></tr></thead><tbody>")
-        out += [f"<tr><td>{escape(p)}</td><td>{escape(part)}</td><td>{_math(text, ml)}</td>"
+        out += [f"<tr><td>{escape(p)}</td><td>{escape(part)}</td><td><div class=\"formula\">{_math(text, ml)}</div></td>"
                 f"<td class=\"num\">{c}</td></tr>" for p, part, text, ml, c in wrong]
         out.append("</tbody></table>")
     mistakes = common_mistakes(book, 12)
@@ -167,7 +195,7 @@ def _index(book: Gradebook) -> str:
                    "</tr></thead><tbody>" +
                    "".join(f"<tr data-jail=\"{escape(j)}\"><td><code>{escape(j)}</code></td>"
                            f"<td class=\"num\">{c}</td></tr>" for j, c in jails.most_common()) + "</tbody></table>")
-    out.append("<h2>Students</h2><table id=\"students-table\" class=\"sortable\"><thead><tr><th>student</th>" +
+    out.append("<h2>Students</h2><div class=\"scroll\"><table id=\"students-table\" class=\"sortable\"><thead><tr><th>student</th>" +
                "".join(f"<th class=\"num\">{escape(p)}</th>" for p in a.ids) +
                "<th class=\"num\">total</th></tr></thead><tbody>")
     for s in book.students:
@@ -177,7 +205,13 @@ def _index(book: Gradebook) -> str:
         out.append(f"<tr data-student=\"{escape(s.student)}\"><td><a href=\"students/{slug(s.student)}.html\">"
                    f"{escape(s.student)}</a></td>{cells}<td class=\"num total\" data-value=\"{s.points:.6f}\">"
                    f"{_n(s.points)}</td></tr>")
-    out.append("</tbody></table>")
+    out.append("</tbody></table></div>")
+    changed = [(st.student, o) for st in book.students for o in overrides_of(st)]
+    if changed:
+        out.append("<h2>Scores set by the instructor</h2><table id=\"overrides\"><thead><tr><th>student</th>"
+                   "<th>part, score, reason</th></tr></thead><tbody>" +
+                   "".join(f"<tr><td>{escape(who)}</td><td>{escape(o)}</td></tr>" for who, o in changed) +
+                   "</tbody></table>")
     if book.skipped:
         out.append("<h2>Skipped files</h2><table id=\"skipped\"><thead><tr><th>file</th><th>reason</th></tr></thead><tbody>" +
                    "".join(f"<tr><td><code>{escape(p)}</code></td><td>{escape(r)}</td></tr>" for p, r in book.skipped) +
@@ -185,24 +219,54 @@ def _index(book: Gradebook) -> str:
     return _page(f"{a.title or a.name}: class report", "\n".join(out))
 
 
-def _problem_section(g: ProblemGrade) -> str:
+def _problem_section(book: Gradebook, g: ProblemGrade) -> str:
+    """One problem of a student's page: each part's points with the weight the total uses, the answer
+    as math (a wide one scrolls in its own cell), the feedback; a message every part shares (a file
+    that could not be used) is said once, above the table."""
     head = (f"<section class=\"problem\" data-problem=\"{escape(g.problem)}\"><h2>Problem {escape(g.problem)}: "
             f"<span class=\"points\" data-value=\"{g.points:.6f}\">{_n(g.points)}</span> / {_n(g.possible)}</h2>")
     if not g.submitted:
         return head + "<p class=\"missing\">No file was handed in for this problem.</p></section>"
     out = [head]
+    feedbacks = {(p["verdict"], p["feedback"]) for p in g.parts}
+    shared = len(g.parts) > 1 and len(feedbacks) == 1 and g.parts[0]["verdict"] != "correct"
     if g.outcome == "failed":
-        out.append(f"<p class=\"failed\">This file could not be graded: {escape(g.reason)}</p>")
-    if g.problems:
-        out.append("<ul class=\"file-problems\">" + "".join(f"<li>{escape(p)}</li>" for p in g.problems) + "</ul>")
-    out.append("<table class=\"parts\"><thead><tr><th>part</th><th>verdict</th><th class=\"num\">score</th>"
+        out.append(f"<p class=\"failed note\">This file could not be graded: {escape(g.reason)}</p>")
+    elif shared:
+        out.append(f"<p class=\"note shared-feedback\">{escape(g.parts[0]['feedback'])}</p>")
+    said = {g.reason, g.parts[0]["feedback"] if shared else None}
+    listed = [p for p in g.problems if p not in said]  # the reason above is not said a second time
+    if listed:
+        out.append("<ul class=\"file-problems\">" + "".join(f"<li>{escape(p)}</li>" for p in listed) + "</ul>")
+    ap = book.assignment.problem(g.problem)
+    weights = {p["part"]: ap.parts.get(p["part"], p["max_score"]) for p in g.parts}
+    total_w = sum(weights.values()) or 1.0
+    out.append("<table class=\"parts\"><colgroup><col class=\"c-part\"><col class=\"c-verdict\">"
+               "<col class=\"c-points\"><col class=\"c-answer\"><col class=\"c-feedback\"></colgroup>"
+               "<thead><tr><th>part</th><th>verdict</th><th class=\"num\">points</th>"
                "<th>your answer</th><th>feedback</th></tr></thead><tbody>")
-    for p in g.parts:
-        out.append(f"<tr data-part=\"{escape(p['part'])}\"><td>{escape(p['part'])}</td>"
-                   f"<td class=\"{escape(p['verdict'])}\">{escape(p['verdict'])}</td>"
-                   f"<td class=\"num\" data-value=\"{p['score']:.6f}\">{_n(p['score'])} / {_n(p['max_score'])}</td>"
-                   f"<td>{_math(p.get('answer_text'), p.get('answer_mathml'))}</td>"
-                   f"<td>{escape(p['feedback'])}</td></tr>")
+    for p, (earned, possible) in zip(g.parts, part_points(ap, g.parts, g.possible)):
+        o = p.get("override")
+        feedback = "" if shared or g.outcome == "failed" else escape(feedback_text(p))
+        verdict, verdict_class = p["verdict"], p["verdict"]
+        if o:
+            feedback = (f"<span class=\"why\">Score set by your instructor: {escape(o['reason'])} (lagrade's "
+                        f"verdict: {escape(p['verdict'])}, {_n(o['engine_score'])} / {_n(p['max_score'])})</span>"
+                        + feedback)
+            verdict, verdict_class = "set by instructor", "partial"
+        weight = f"weight {_n(weights[p['part']])} of {_n(total_w)}"
+        row_class = ' class="override"' if o else ""
+        feedback = feedback or '<span class="muted">see above</span>'
+        out.append(f"<tr data-part=\"{escape(p['part'])}\"{row_class}>"
+                   f"<td data-label=\"part\">{escape(p['part'])}</td>"
+                   f"<td data-label=\"verdict\" class=\"{escape(verdict_class)}\">{escape(verdict)}</td>"
+                   f"<td data-label=\"points\" class=\"num\" data-value=\"{p['score']:.6f}\" data-points=\"{earned:.4f}\" "
+                   f"data-possible=\"{possible:.4f}\" title=\"{weight}\">{_n(earned)} / {_n(possible)}"
+                   f"<span class=\"muted weight\"><br>{weight}</span></td>"
+                   f"<td data-label=\"your answer\" class=\"answer\"><div class=\"formula\">"
+                   f"{_math(p.get('answer_text'), p.get('answer_mathml'))}</div></td>"
+                   f"<td data-label=\"feedback\" class=\"feedback\">{feedback}"
+                   f"</td></tr>")
     out.append("</tbody></table>")
     if g.source:
         out.append(f"<details><summary>the file as graded ({escape(g.path)})</summary><pre>{escape(g.source)}</pre></details>")
@@ -212,10 +276,10 @@ def _problem_section(g: ProblemGrade) -> str:
 
 def _student(book: Gradebook, s: StudentGrade) -> str:
     a = book.assignment
-    body = [f"<p><a href=\"../index.html\">class report</a></p>",
+    body = ["<p><a href=\"../index.html\">class report</a></p>",
             f"<h1>{escape(a.title or a.name)}: {escape(s.student)}</h1>",
             f"<p>Total <span id=\"total\" data-value=\"{s.points:.6f}\">{_n(s.points)}</span> / {_n(s.possible)} points.</p>"]
-    body += [_problem_section(g) for g in s.problems.values()]
+    body += [_problem_section(book, g) for g in s.problems.values()]
     return _page(f"{s.student}: {a.title or a.name}", "\n".join(body), depth=1)
 
 

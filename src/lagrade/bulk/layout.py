@@ -49,6 +49,14 @@ def file_hash(data: bytes) -> str:
     return hashlib.sha256(data).hexdigest()
 
 
+def _near_miss(name: str, problem_ids: list[str]) -> str:
+    """A hint for a file named nearly right (``12_22.py``): it is skipped here, never guessed at."""
+    from lagrade.bulk.intake import match_name
+
+    m = match_name(name, problem_ids)
+    return f" (named like problem {m.problem}: rename it {m.problem}.py, or use 'lagrade import')" if m else ""
+
+
 def scan(root: Path, problem_ids: list[str]) -> Layout:
     """Every submission under ``root`` for the assignment's problems, and every file skipped."""
     root = Path(root)
@@ -90,9 +98,10 @@ def scan(root: Path, problem_ids: list[str]) -> Layout:
             elif f.name.startswith("."):
                 skip(f, "a hidden file")
             elif f.suffix not in (".py", ".toml"):
-                skip(f, f"not an answer file (expected <problem-id>.py or <problem-id>.toml, got '{f.suffix or f.name}')")
+                skip(f, f"not an answer file (expected <problem-id>.py or <problem-id>.toml, got '{f.suffix or f.name}')"
+                     + _near_miss(f.name, problem_ids))
             elif f.stem not in wanted:
-                skip(f, f"problem '{f.stem}' is not in the assignment")
+                skip(f, f"problem '{f.stem}' is not in the assignment" + _near_miss(f.name, problem_ids))
             elif fst.st_size > MAX_FILE_BYTES:
                 skip(f, f"larger than {MAX_FILE_BYTES // 1000} kB")
             else:

@@ -83,6 +83,16 @@ CREATE TABLE IF NOT EXISTS skipped (
     path   TEXT PRIMARY KEY,
     reason TEXT NOT NULL
 );
+CREATE TABLE IF NOT EXISTS overrides (  -- an instructor's score for a part: kept across regrades
+    student    TEXT NOT NULL,
+    problem    TEXT NOT NULL,
+    part       TEXT NOT NULL,
+    score      REAL NOT NULL,              -- on the part's own scale (0 .. max_score)
+    max_score  REAL NOT NULL,
+    reason     TEXT NOT NULL,
+    set_at     TEXT NOT NULL,
+    PRIMARY KEY (student, problem, part)
+);
 CREATE TABLE IF NOT EXISTS grade_log (   -- append-only: one line per committed grade
     id             INTEGER PRIMARY KEY AUTOINCREMENT,
     student        TEXT NOT NULL,
@@ -100,7 +110,9 @@ COLUMNS_ADDED = [
     ("submissions", "attempts", "INTEGER NOT NULL DEFAULT 1"),
     ("submissions", "jail", "TEXT"),
 ]
-TABLES = {"meta", "students", "submissions", "parts", "skipped", "grade_log", "sqlite_sequence"}
+#: ``overrides`` came after SCHEMA_VERSION 1: ``CREATE TABLE IF NOT EXISTS`` adds it to an older gradebook
+#: when a writer opens it; readers of an older gradebook see no overrides (:meth:`Store.overrides`)
+TABLES = {"meta", "students", "submissions", "parts", "skipped", "grade_log", "sqlite_sequence", "overrides"}
 SQLITE_MAGIC = b"SQLite format 3\x00"
 
 
@@ -284,6 +296,27 @@ class Store:
 
     def _columns(self, table: str) -> set[str]:
         return {r[1] for r in self.db.execute(f"PRAGMA table_info({table})")}
+
+    def set_override(self, *, student: str, problem: str, part: str, score: float, max_score: float,
+                     reason: str) -> None:
+        """Record (or replace) an instructor's score for one part; grading never touches it."""
+        with self.transaction():
+            self.db.execute("INSERT INTO overrides(student, problem, part, score, max_score, reason, set_at) "
+                            "VALUES(?, ?, ?, ?, ?, ?, ?) ON CONFLICT(student, problem, part) DO UPDATE SET "
+                            "score = excluded.score, max_score = excluded.max_score, reason = excluded.reason, "
+                            "set_at = excluded.set_at", (student, problem, part, score, max_score, reason, _now()))
+
+    def remove_override(self, student: str, problem: str, part: str) -> bool:
+        with self.transaction():
+            cur = self.db.execute("DELETE FROM overrides WHERE student = ? AND problem = ? AND part = ?",
+                                  (student, problem, part))
+        return cur.rowcount > 0
+
+    def overrides(self) -> list[sqlite3.Row]:
+        """Every override (none in a gradebook older than the table, which a reader does not migrate)."""
+        if not self.db.execute("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'overrides'").fetchone():
+            return []
+        return self.db.execute("SELECT * FROM overrides ORDER BY student, problem, part").fetchall()
 
     def skipped(self) -> list[sqlite3.Row]:
         return self.db.execute("SELECT * FROM skipped ORDER BY path").fetchall()

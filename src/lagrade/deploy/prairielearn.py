@@ -1,0 +1,207 @@
+"""The PrairieLearn external grader: a Docker image from the lagrade wheel, its entry point, a question.
+
+PrairieLearn runs the image's entry point with the job in ``/grade``: ``data/data.json`` (the
+question's ``data``, whose ``params["lagrade"]`` the example ``server.py`` sets: the problem, the
+file name, the accuracy), ``student/`` (the submitted files); the entry point must leave
+``results/results.json``: ``gradable``, ``score`` in [0, 1], ``message``, ``format_errors``,
+``tests`` (one per part: ``name``, ``description``, ``points``, ``max_points``, ``message``,
+``output``) and ``images`` (the student's motion against the true one, a PNG ``data:`` URL, for
+every incorrect dynamics part). A file that cannot be used (a syntax error, nothing assigned, a
+file the sandbox stopped) is ``gradable: false`` with the reasons in ``format_errors``: PrairieLearn
+then does not count the attempt. The answer runs in lagrade's sandbox as ``lagrade check`` runs it.
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+import tempfile
+import time
+import uuid
+from pathlib import Path
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+#: PrairieLearn's limit on results.json is 1 MB: a plot larger than this is left out (and said)
+MAX_IMAGE_BYTES = 600_000
+ENTRYPOINT = "/usr/local/bin/lagrade-pl-grade"
+IMAGE = "lagrade-prairielearn:latest"
+
+
+class JobParams(BaseModel):
+    """``data["params"]["lagrade"]``: what the question asks lagrade to grade."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    problem: str = Field(min_length=1, max_length=100)
+    file: str = Field("answer.py", pattern=r"^[A-Za-z0-9_.-]{1,100}\.(py|toml)$")
+    accuracy: Literal["fast", "default", "strict"] = "default"
+
+
+def _not_gradable(errors: list[str], message: str) -> dict:
+    return {"gradable": False, "score": 0.0, "message": message, "format_errors": errors, "tests": [], "images": []}
+
+
+def read_job(root: Path) -> tuple[JobParams, Path] | dict:
+    """The job's parameters and the student's file, or the results that say why there are none."""
+    try:
+        data = json.loads((root / "data" / "data.json").read_text(encoding="utf-8"))
+        params = JobParams.model_validate((data.get("params") or {}).get("lagrade"))
+    except (OSError, ValueError, AttributeError) as exc:
+        what = "; ".join(f"{'.'.join(map(str, e['loc'])) or 'lagrade'}: {e['msg']}" for e in exc.errors()) \
+            if isinstance(exc, ValidationError) else str(exc)
+        return _not_gradable([f"the question is set up wrongly (data.json params.lagrade: {what})"],
+                             "This question's grader is misconfigured; please tell your instructor.")
+    student = root / "student"
+    path = student / params.file
+    if not path.is_file() or path.is_symlink():
+        found = sorted(p.name for p in student.glob("*") if p.suffix in (".py", ".toml") and p.is_file()
+                       and not p.is_symlink()) if student.is_dir() else []
+        if len(found) != 1:
+            return _not_gradable([f"no file {params.file} was submitted"], f"Submit your answer as {params.file}.")
+        path = student / found[0]
+    return params, path
+
+
+def _image(result) -> list[dict]:
+    from lagrade.plot import plot_result
+
+    with tempfile.TemporaryDirectory(prefix="lagrade-pl-plot-") as tmp:
+        png = Path(tmp) / "motion.png"
+        if not plot_result(result, png):
+            return []
+        data = png.read_bytes()
+    if len(data) > MAX_IMAGE_BYTES:
+        return []
+    return [{"label": "Your motion (dashed) against the true one",
+             "url": "data:image/png;base64," + base64.b64encode(data).decode()}]
+
+
+def grade_job(root: Path = Path("/grade")) -> dict:
+    """Grade the job in ``root`` and return PrairieLearn's results (see the module's docstring)."""
+    from lagrade.bulk.exports import feedback_text, readable
+    from lagrade.grade import check
+    from lagrade.spec import SpecError
+
+    t0 = time.monotonic()
+    job = read_job(root)
+    if isinstance(job, dict):
+        return job
+    params, path = job
+    try:
+        result = check(params.problem, path, accuracy=params.accuracy)
+    except SpecError as exc:
+        return _not_gradable([f"the question is set up wrongly: {exc}"],
+                             "This question's grader is misconfigured; please tell your instructor.")
+    if result.parts and all(p.verdict == "invalid" for p in result.parts) and result.problems:
+        return _not_gradable(list(result.problems), "Your file could not be graded; fix it and submit again.")
+    tests = []
+    for p in result.parts:
+        shown = {"verdict": p.verdict, "feedback": p.feedback}
+        out = f"Read as: {readable(p.read_as_text)}" if p.read_as_text else ""
+        tests.append({"name": p.part, "description": p.verdict, "points": round(p.score, 6),
+                      "max_points": round(p.max_score, 6), "message": feedback_text(shown), "output": out})
+    score = result.score / result.max_score if result.max_score else 0.0
+    lines = [f"Problem {result.problem}: {result.score:g} / {result.max_score:g}"] + list(result.problems)
+    return {"gradable": True, "score": min(1.0, max(0.0, score)), "message": "\n".join(lines),
+            "format_errors": [], "tests": tests, "images": _image(result),
+            "output": f"graded in {time.monotonic() - t0:.1f} s"}
+
+
+def write_results(root: Path = Path("/grade")) -> dict:
+    """Grade and write ``root/results/results.json``; lagrade failing still leaves a result."""
+    try:
+        results = grade_job(root)
+    except Exception as exc:  # noqa: BLE001 - the student must get a result, never a hung job
+        results = _not_gradable([f"the grader failed ({type(exc).__name__})"],
+                                "The grader failed on this submission; please tell your instructor.")
+    out = root / "results"
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "results.json").write_text(json.dumps(results), encoding="utf-8")
+    return results
+
+
+# ------------------------------------------------------------------------------------- the build
+
+DOCKERFILE = """# lagrade's PrairieLearn external grader: build with
+#   docker build -t {image} .
+# and set "image" in each question's info.json to the name you push it under.
+FROM python:3.11-slim
+COPY {wheel} /tmp/
+RUN pip install --no-cache-dir /tmp/{wheel} && rm /tmp/{wheel}
+COPY lagrade-pl-grade {entrypoint}
+RUN chmod 0755 {entrypoint} && python -m lagrade cache build || true
+"""
+
+ENTRY_SCRIPT = """#!/bin/sh
+# PrairieLearn runs this in the grading container: /grade/data/data.json, /grade/student/ in,
+# /grade/results/results.json out.
+exec python -m lagrade prairielearn grade --root "${LAGRADE_GRADE_ROOT:-/grade}"
+"""
+
+SERVER_PY = '''"""PrairieLearn question {qid}: lagrade grades the submitted {file} externally."""
+
+
+def generate(data):
+    data["params"]["lagrade"] = {{"problem": {problem!r}, "file": {file!r}, "accuracy": "default"}}
+'''
+
+
+def _skeleton(problem) -> str:
+    lines = [f'"""Answer to problem {problem.id}: {problem.title}."""', "", "from lagrade.answer import *", ""]
+    for part in problem.parts:
+        lines += [f"# {part.prompt}", f"{part.name} = None", ""]
+    return "\n".join(lines)
+
+
+def question_files(problem_id: str, problems_dirs: tuple[Path, ...] = (), image: str = IMAGE) -> dict[str, str]:
+    """``info.json``, ``question.html`` and ``server.py`` of a question graded by lagrade."""
+    from html import escape
+
+    from lagrade.library import load_problem
+
+    problem = load_problem(problem_id, problems_dirs)
+    file = "answer.py"
+    qid = f"lagrade-{problem.id}"
+    info = {"uuid": str(uuid.uuid5(uuid.NAMESPACE_URL, f"lagrade:{problem.id}")), "type": "v3",
+            "title": f"{problem.id}: {problem.title}", "topic": "Lagrangian and Hamiltonian dynamics",
+            "tags": ["lagrade"], "gradingMethod": "External", "singleVariant": True, "partialCredit": True,
+            "externalGradingOptions": {"enabled": True, "image": image, "entrypoint": ENTRYPOINT, "timeout": 120}}
+    parts = "".join(f"<li><code>{escape(p.name)}</code>: {escape(p.prompt)}</li>" for p in problem.parts)
+    html = (f"<pl-question-panel>\n  <p>{escape(problem.statement.strip())}</p>\n  <p>Assign each part in "
+            f"<code>{file}</code> (sympy; <code>lagrade template {escape(problem.id)}</code> gives the names):</p>\n"
+            f"  <ul>{parts}</ul>\n</pl-question-panel>\n\n"
+            f"<pl-file-editor file-name=\"{file}\" ace-mode=\"ace/mode/python\">\n{escape(_skeleton(problem))}\n"
+            "</pl-file-editor>\n\n<pl-submission-panel>\n  <pl-external-grader-results></pl-external-grader-results>\n"
+            "  <pl-file-preview></pl-file-preview>\n</pl-submission-panel>\n")
+    return {"info.json": json.dumps(info, indent=2) + "\n", "question.html": html,
+            "server.py": SERVER_PY.format(qid=qid, problem=problem.id, file=file)}
+
+
+def build_grader(output: Path, problem_id: str = "12.43", problems_dirs: tuple[Path, ...] = (),
+                 wheel: Path | None = None) -> list[str]:
+    """Write the Docker build folder (Dockerfile, wheel, entry script) and one example question
+    (``questions/lagrade-<id>/``) into ``output``; the files written, relative to it."""
+    import shutil
+
+    from lagrade.deploy.wheel import build_wheel, check_wheel
+
+    if wheel is not None:
+        check_wheel(wheel)
+    output.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix="lagrade-pl-build-") as tmp:
+        whl = wheel or build_wheel(Path(tmp) / "wheel")
+        for old in output.glob("lagrade-*.whl"):
+            old.unlink()
+        shutil.copyfile(whl, output / whl.name)
+    (output / "Dockerfile").write_text(DOCKERFILE.format(image=IMAGE, wheel=whl.name, entrypoint=ENTRYPOINT))
+    (output / "lagrade-pl-grade").write_text(ENTRY_SCRIPT)
+    (output / "lagrade-pl-grade").chmod(0o755)
+    written = [whl.name, "Dockerfile", "lagrade-pl-grade"]
+    question = output / "questions" / f"lagrade-{problem_id}"
+    question.mkdir(parents=True, exist_ok=True)
+    for name, text in question_files(problem_id, problems_dirs).items():
+        (question / name).write_text(text, encoding="utf-8")
+        written.append(str((question / name).relative_to(output)))
+    return written
