@@ -1,0 +1,171 @@
+"""`lagrade serve` under a class: simulated students submitting 12.14 answers to a server on 127.0.0.1.
+
+    python benchmarks/serve_load.py                       # 200 students, arrivals spread over 60 s
+    python benchmarks/serve_load.py --spread 0            # all 200 at once
+    python benchmarks/serve_load.py --students 50 --workers 2 --deadline 300
+
+Starts ``lagrade serve`` (a fresh database in a temporary folder, tokens required), issues a token
+per student, and has each student submit one 12.14 answer by upload: right (the reference solution,
+the golden right files), wrong (the golden wrong files), broken (a syntax error, an empty file) and
+hostile (imports os, opens a file, walks ``__subclasses__``), in proportions 40/30/15/15. Each
+request waits for its grade (a 202 is polled until graded). Bounded: ``--students`` submissions,
+and everything still unanswered at ``--deadline`` seconds counts as an error.
+
+Prints p50 / p95 / max latency (send to grade received), throughput (grades per second over the
+run), errors (anything but a grade), and lost: attempts a student was given an id for that are not
+graded in the database when the run ends, plus submissions the database does not hold at all.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import os
+import random
+import shutil
+import signal
+import socket
+import sqlite3
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import httpx
+
+REPO = Path(__file__).resolve().parents[1]
+GOLDEN = REPO / "tests" / "answers" / "12.14"
+
+
+def answers() -> dict[str, list[tuple[str, bytes]]]:
+    right = [("answer.py", (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes())]
+    right += [(f"answer{p.suffix}", p.read_bytes()) for p in sorted(GOLDEN.glob("correct_*"))]
+    wrong = [(f"answer{p.suffix}", p.read_bytes()) for p in sorted(GOLDEN.glob("wrong_*"))]
+    broken = [("answer.py", b"from sympy import *\nL = (m1*\n"), ("answer.py", b""), ("answer.toml", b'L = "m1*\n')]
+    hostile = [("answer.py", b"import os\nos.system('true')\nL = 1\n"), ("answer.py", b"L = open('/etc/passwd').read()\n"),
+               ("answer.py", b"x = ().__class__.__bases__[0].__subclasses__()\nL = len(x)\n")]
+    return {"right": right, "wrong": wrong, "broken": broken, "hostile": hostile}
+
+
+def pick(rng: random.Random, pool: dict, i: int) -> tuple[str, str, bytes]:
+    kind = rng.choices(["right", "wrong", "broken", "hostile"], weights=[40, 30, 15, 15])[0]
+    name, data = rng.choice(pool[kind])
+    # each student's own file (a comment, in .py and .toml alike): no two attempts share their content
+    return kind, name, data + f"\n# student {i}\n".encode()
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+async def student(client, base, token, kind, name, data, start_at, t0, deadline, out):
+    await asyncio.sleep(max(0.0, t0 + start_at - time.monotonic()))
+    h = {"Authorization": f"Bearer {token}"}
+    sent = time.monotonic()
+    sid = None
+    try:
+        r = await client.post(f"{base}/api/v1/problems/12.14/check", headers=h, files={"file": (name, data)},
+                              timeout=max(1.0, t0 + deadline - time.monotonic()))
+        body = r.json()
+        sid = body.get("submission_id")
+        while r.status_code == 202 and time.monotonic() < t0 + deadline:
+            await asyncio.sleep(0.5)
+            r = await client.get(f"{base}/api/v1/submissions/{sid}", headers=h, timeout=10)
+            body = r.json()
+        ok = r.status_code == 200 and body.get("state") == "graded"
+        out.append({"kind": kind, "ok": ok, "seconds": time.monotonic() - sent, "sid": sid,
+                    "error": None if ok else f"{r.status_code} {str(body)[:120]}"})
+    except Exception as exc:  # noqa: BLE001
+        out.append({"kind": kind, "ok": False, "seconds": time.monotonic() - sent, "sid": sid,
+                    "error": f"{type(exc).__name__}: {exc}"})
+
+
+async def run(base: str, tokens: list[str], spread: float, deadline: float, seed: int) -> list[dict]:
+    rng = random.Random(seed)
+    pool = answers()
+    jobs = [(tokens[i], *pick(rng, pool, i), rng.uniform(0, spread)) for i in range(len(tokens))]
+    out: list[dict] = []
+    limits = httpx.Limits(max_connections=len(tokens), max_keepalive_connections=len(tokens))
+    async with httpx.AsyncClient(limits=limits) as client:
+        t0 = time.monotonic()
+        await asyncio.gather(*(student(client, base, tok, kind, name, data, at, t0, deadline, out)
+                               for tok, kind, name, data, at in jobs))
+    return out
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--students", type=int, default=200)
+    ap.add_argument("--spread", type=float, default=60.0, help="seconds over which students arrive (0: all at once)")
+    ap.add_argument("--workers", type=int, default=2, help="grader processes of the server")
+    ap.add_argument("--deadline", type=float, default=600.0, help="seconds after which the run stops waiting")
+    ap.add_argument("--seed", type=int, default=1)
+    args = ap.parse_args()
+
+    work = Path(tempfile.mkdtemp(prefix="lagrade-serve-load-"))
+    (work / "hw.toml").write_text('name = "load"\n[[problems]]\nid = "12.14"\n', encoding="utf-8")
+    db = work / "serve.sqlite"
+    roster = work / "roster.csv"
+    roster.write_text("student\n" + "".join(f"s{i:03d}\n" for i in range(args.students)), encoding="utf-8")
+    tokens_csv = subprocess.run([sys.executable, "-m", "lagrade", "tokens", str(roster), "--db", str(db)],
+                                check=True, capture_output=True, text=True).stdout
+    tokens = [line.split(",")[1] for line in tokens_csv.splitlines()[1:] if not line.startswith("@")]
+    port = free_port()
+    with open(work / "serve.log", "wb") as log:  # the server keeps its own descriptor
+        server = subprocess.Popen([sys.executable, "-m", "lagrade", "serve", "--assignment", str(work / "hw.toml"),
+                                   "--db", str(db), "--roster", str(roster), "--port", str(port),
+                                   "--workers", str(args.workers)],
+                                  stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+    base = f"http://127.0.0.1:{port}"
+    try:
+        t = time.monotonic()
+        while True:
+            try:
+                if httpx.get(f"{base}/healthz", timeout=1).status_code == 200:
+                    break
+            except httpx.HTTPError:
+                pass
+            if server.poll() is not None or time.monotonic() - t > 120:
+                sys.exit(f"the server did not start: {(work / 'serve.log').read_text()[-2000:]}")
+            time.sleep(0.2)
+        time.sleep(float(os.environ.get("LAGRADE_LOAD_WARMUP", "15")))  # let the graders warm up first
+        t0 = time.monotonic()
+        results = asyncio.run(run(base, tokens, args.spread, args.deadline, args.seed))
+        wall = time.monotonic() - t0
+    finally:
+        server.send_signal(signal.SIGINT)
+        try:
+            server.wait(timeout=60)
+        except subprocess.TimeoutExpired:
+            os.killpg(server.pid, signal.SIGKILL)
+            server.wait()
+    con = sqlite3.connect(db)
+    states = dict(con.execute("SELECT id, state FROM server_submissions").fetchall())
+    graded_seconds = con.execute("SELECT sum(seconds) FROM submissions").fetchone()[0] or 0.0
+    con.close()
+    shutil.rmtree(work, ignore_errors=True)
+    given = [r["sid"] for r in results if r["sid"] is not None]
+    lost = sum(1 for sid in given if states.get(sid) != "graded") + (len(results) - len(given))
+    ok = sorted(r["seconds"] for r in results if r["ok"])
+    errors = [r for r in results if not r["ok"]]
+    q = statistics.quantiles(ok, n=100) if len(ok) >= 2 else [float("nan")] * 99
+    print(f"students {args.students}, arrivals over {args.spread:g} s, {args.workers} grader processes, "
+          f"{os.cpu_count()} cores")
+    by_kind = {}
+    for r in results:
+        by_kind.setdefault(r["kind"], []).append(r["seconds"])
+    print("  kinds: " + ", ".join(f"{k} {len(v)}" for k, v in sorted(by_kind.items())))
+    print(f"  latency p50 {q[49]:.2f} s, p95 {q[94]:.2f} s, max {max(ok, default=float('nan')):.2f} s")
+    print(f"  throughput {len(ok) / wall:.2f} grades/s over {wall:.1f} s")
+    print(f"  grading time in the graders: {graded_seconds:.1f} s in all ({graded_seconds / max(1, len(ok)):.3f} s a file)")
+    print(f"  errors {len(errors)}, lost {lost}")
+    for r in errors[:5]:
+        print(f"    {r['kind']}: {r['error']}")
+
+
+if __name__ == "__main__":
+    main()

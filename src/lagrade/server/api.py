@@ -1,0 +1,158 @@
+"""API v1 (JSON, described by the OpenAPI document at /openapi.json): the problems, checking an answer, earlier attempts."""
+
+from __future__ import annotations
+
+import asyncio
+from pathlib import Path
+
+from fastapi import APIRouter, HTTPException, Request
+from fastapi.responses import JSONResponse
+from pydantic import ValidationError
+
+from lagrade.server.answers import (
+    AnswerIn,
+    AnswerTextError,
+    PreviewIn,
+    preview,
+    to_toml,
+)
+
+router = APIRouter(prefix="/api/v1", tags=["api v1"])
+
+_CHECK_BODY = {
+    "requestBody": {
+        "required": True,
+        "content": {
+            "application/json": {"schema": AnswerIn.model_json_schema()},
+            "multipart/form-data": {"schema": {"type": "object", "required": ["file"], "properties": {
+                "file": {"type": "string", "format": "binary", "description": "answer.py or answer.toml"}}}},
+        },
+    }
+}
+
+
+def _server(request: Request):
+    return request.app.state.server
+
+
+def one_line(exc: ValidationError) -> str:
+    e = exc.errors()[0]
+    where = ".".join(str(x) for x in e["loc"]) or "body"
+    return f"{where}: {e['msg']}; expected {{\"answer\": {{part: text, list of texts or table of texts}}}}"
+
+
+@router.get("/problems")
+def problems(request: Request) -> list[dict]:
+    """The assignment's problems: id, title, parts."""
+    server = _server(request)
+    server.identify(request)
+    return [{"id": pid, "title": p.title, "parts": [{"name": f["name"], "kind": f["kind"], "prompt": f["prompt"]}
+                                                     for f in server.fields(pid)]}
+            for pid, p in server.problems.items()]
+
+
+@router.get("/problems/{pid}")
+def problem(pid: str, request: Request) -> dict:
+    """What ``lagrade show`` and ``lagrade template`` print, and the fields of the student page."""
+    server = _server(request)
+    server.identify(request)
+    p = server.problem(pid)
+    return {"id": pid, "title": p.title, "show": server.text("show", pid), "template": server.text("template", pid),
+            "fields": server.fields(pid)}
+
+
+@router.post("/problems/{pid}/check", openapi_extra=_CHECK_BODY, status_code=200,
+             responses={202: {"description": "stored and queued; poll /api/v1/submissions/{id}"}})
+async def check(pid: str, request: Request) -> JSONResponse:
+    """Grade an answer: JSON ``{"answer": {...}}`` (the values answer.toml holds) or an uploaded file.
+
+    Returns what ``lagrade check --json`` prints, plus ``submission_id``."""
+    server = _server(request)
+    who = server.identify(request)
+    server.problem(pid)
+    suffix, data = await read_answer(request)
+    server.require_csrf(who, request.headers.get("x-csrf-token"))
+    return await submit(server, who, pid, suffix, data)
+
+
+async def read_answer(request: Request) -> tuple[str, bytes]:
+    """(suffix, bytes) of the answer in a JSON body or a multipart upload; 422 with one line otherwise."""
+    kind = request.headers.get("content-type", "")
+    if kind.startswith("multipart/form-data"):
+        form = await request.form(max_files=1, max_fields=5)
+        upload = form.get("file")
+        if upload is None or isinstance(upload, str):
+            raise HTTPException(422, "no file; expected a multipart field 'file' holding answer.py or answer.toml")
+        suffix = Path(upload.filename or "").suffix
+        if suffix not in (".py", ".toml"):
+            raise HTTPException(422, f"{upload.filename!r} is neither a .py nor a .toml file; expected answer.py "
+                                     "or answer.toml")
+        return suffix, await upload.read()
+    if not kind.startswith("application/json"):
+        raise HTTPException(415, "expected a JSON body {\"answer\": {...}} or a multipart upload of answer.py/answer.toml")
+    try:
+        body = AnswerIn.model_validate_json(await request.body())
+    except ValidationError as exc:
+        raise HTTPException(422, one_line(exc)) from None
+    try:
+        return ".toml", to_toml(body.answer)
+    except AnswerTextError as exc:
+        raise HTTPException(422, str(exc)) from None
+
+
+async def submit(server, who, pid: str, suffix: str, data: bytes) -> JSONResponse:
+    """Store the attempt (before grading it), queue it, wait for its grade; idempotent per content."""
+    from lagrade.bulk.layout import file_hash
+
+    server.limit(who)
+    sid, new = await asyncio.to_thread(
+        server.db.submit, student=who.student, problem=pid, suffix=suffix, data=data, file_hash=file_hash(data),
+        grading_hash=server.plan.keys[pid], version=server.plan.version)
+    if new and server.queue is not None:
+        server.queue.put(sid)
+    att = await server.queue.wait(sid, server.config.wait_seconds) if server.queue is not None else None
+    if att is None or not att.graded:
+        return JSONResponse({"submission_id": sid, "state": "queued",
+                             "detail": f"stored and queued; GET /api/v1/submissions/{sid} for the grade"}, 202)
+    return JSONResponse({**att.result, "submission_id": sid, "state": "graded"})
+
+
+@router.post("/problems/{pid}/preview")
+async def read_as(pid: str, body: PreviewIn, request: Request) -> dict:
+    """How a part's text will be read (as answer.toml is read): sympy text and presentation MathML."""
+    server = _server(request)
+    who = server.identify(request)
+    p = server.problem(pid)
+    server.require_csrf(who, request.headers.get("x-csrf-token"))
+    server.limit(who, preview=True)
+
+    def one_at_a_time() -> dict:  # previews use at most one core, whoever sends them
+        with server.preview_slot:
+            return preview(p, body.part, body.value)
+
+    return await asyncio.to_thread(one_at_a_time)
+
+
+@router.get("/submissions/{sid}")
+def submission(sid: int, request: Request) -> JSONResponse:
+    """One of your attempts: its grade, or ``queued``."""
+    server = _server(request)
+    who = server.identify(request)
+    att = server.db.attempt(sid)
+    if att is None or (att.student != who.student and not who.instructor):
+        raise HTTPException(404, f"no submission {sid} of yours")
+    if not att.graded:
+        return JSONResponse({"submission_id": sid, "state": "queued"}, 202)
+    return JSONResponse({**att.result, "submission_id": sid, "state": "graded"})
+
+
+@router.get("/problems/{pid}/submissions")
+def submissions(pid: str, request: Request) -> list[dict]:
+    """Your earlier attempts at a problem, newest first."""
+    server = _server(request)
+    who = server.identify(request)
+    server.problem(pid)
+    return [{"submission_id": a.id, "state": a.state, "created_at": a.created_at,
+             "score": a.result["score"] if a.result else None,
+             "max_score": a.result["max_score"] if a.result else None}
+            for a in server.db.attempts(who.student, pid)]

@@ -1,0 +1,40 @@
+"""The FastAPI application: ``create_app(ServerConfig)``; uvicorn serves it (``lagrade serve``).
+
+Everything the routes share lives in one :class:`lagrade.server.state.Server` on ``app.state``.
+"""
+
+from __future__ import annotations
+
+from contextlib import asynccontextmanager
+
+from fastapi import FastAPI
+
+from lagrade.server import api, web
+from lagrade.server.config import ServerConfig
+from lagrade.server.limits import BodyLimit
+from lagrade.server.state import Server
+
+
+def create_app(config: ServerConfig, *, grade: bool = True) -> FastAPI:
+    """The ASGI app. ``grade=False`` starts no graders (tests of what needs none)."""
+    server = Server(config)
+
+    @asynccontextmanager
+    async def lifespan(app: FastAPI):
+        if grade:
+            server.start()
+        try:
+            yield
+        finally:
+            server.stop()
+
+    # the OpenAPI document is served (/openapi.json); the Swagger and ReDoc pages are not: they load
+    # their scripts from a CDN, and nothing here fetches anything from outside
+    app = FastAPI(title="lagrade", version="1", lifespan=lifespan, docs_url=None, redoc_url=None,
+                  description="Check answers to the problems of an assignment; the references stay on the server.")
+    app.state.server = server
+    app.include_router(api.router)
+    app.include_router(web.router)
+    app.add_middleware(BodyLimit, max_bytes=config.max_body)
+    return app
+

@@ -1,0 +1,34 @@
+"""The server's settings, validated once (a pydantic model: they cross the CLI/app boundary)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from pydantic import BaseModel, ConfigDict, Field
+
+
+class ServerConfig(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    #: the assignment TOML file (bulk grading's format)
+    assignment: Path
+    #: a SQLite file path, or an SQLAlchemy URL (postgresql+psycopg://user@host/db)
+    db: str
+    #: students allowed to sign in (None: anyone holding a token this server's secret signed)
+    roster: tuple[str, ...] | None = None
+    #: no tokens at all: a lecture demo
+    open: bool = False
+    problems_dirs: tuple[Path, ...] = ()
+    #: warm grader processes
+    workers: int = Field(2, ge=1)
+    #: grade on this Dask cluster instead (tcp://host:8786; needs lagrade[dask])
+    scheduler: str | None = None
+    #: largest request body accepted, in bytes (answer.toml itself is refused over 200 kB)
+    max_body: int = Field(256_000, ge=1024)
+    #: checks per minute and per token, with this many at once (a token bucket)
+    checks_per_minute: float = Field(20, gt=0)
+    check_burst: int = Field(10, ge=1)
+    previews_per_minute: float = Field(90, gt=0)
+    preview_burst: int = Field(30, ge=1)
+    #: how long a check request waits for its grade before answering "queued" (202)
+    wait_seconds: float = Field(120, gt=0)

@@ -1,0 +1,334 @@
+"""The server's database through SQLAlchemy: the gradebook of ``lagrade grade`` plus its own table.
+
+The gradebook tables (``meta``, ``students``, ``submissions``, ``parts``, ``skipped``,
+``grade_log``) mirror :data:`lagrade.bulk.store.SCHEMA` column for column, so that ``lagrade
+export`` and ``lagrade report`` read a server's SQLite file as they read ``lagrade grade``'s; on
+SQLite the file is even created by :class:`lagrade.bulk.store.Store` itself, so the two cannot drift
+(a test compares the tables too). ``server_submissions`` keeps every attempt with its file, stored
+*before* it is graded: a server killed mid-grade grades what is left when it starts again. The
+gradebook holds each student's latest graded attempt per problem, as ``lagrade grade`` holds the
+file in the folder.
+
+SQLite by default (one file), PostgreSQL by URL (``postgresql+psycopg://...``). Writes go through
+one lock: the server is one process, and SQLite wants one writer.
+"""
+
+from __future__ import annotations
+
+import json
+import secrets
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from sqlalchemy import (
+    CheckConstraint,
+    Column,
+    Float,
+    ForeignKeyConstraint,
+    Integer,
+    LargeBinary,
+    MetaData,
+    String,
+    Table,
+    Text,
+    UniqueConstraint,
+    create_engine,
+    delete,
+    event,
+    func,
+    insert,
+    select,
+    update,
+)
+from sqlalchemy.engine import Engine
+from sqlalchemy.exc import IntegrityError
+
+from lagrade.bulk.store import SCHEMA_VERSION
+
+metadata = MetaData()
+
+meta = Table("meta", metadata, Column("key", String(200), primary_key=True), Column("value", Text, nullable=False))
+students = Table("students", metadata, Column("student", String(200), primary_key=True))
+submissions = Table(
+    "submissions", metadata,
+    Column("student", String(200), primary_key=True), Column("problem", String(50), primary_key=True),
+    Column("path", Text, nullable=False), Column("file_hash", String(64), nullable=False),
+    Column("grading_hash", String(64), nullable=False), Column("grader_version", String(50), nullable=False),
+    Column("outcome", String(20), nullable=False), Column("status", String(30), nullable=False),
+    Column("reason", Text, nullable=False, server_default=""), Column("score", Float, nullable=False),
+    Column("max_score", Float, nullable=False), Column("problems", Text, nullable=False, server_default="[]"),
+    Column("stdout", Text, nullable=False, server_default=""), Column("source", Text, nullable=False, server_default=""),
+    Column("seconds", Float, nullable=False), Column("graded_at", String(30), nullable=False),
+    Column("attempts", Integer, nullable=False, server_default="1"), Column("jail", Text),
+    CheckConstraint("outcome IN ('graded', 'failed')"),
+)
+parts = Table(
+    "parts", metadata,
+    Column("student", String(200), primary_key=True), Column("problem", String(50), primary_key=True),
+    Column("part", String(100), primary_key=True), Column("verdict", String(20), nullable=False),
+    Column("score", Float, nullable=False), Column("max_score", Float, nullable=False),
+    Column("method", String(20), nullable=False), Column("feedback", Text, nullable=False),
+    Column("answer_text", Text), Column("answer_mathml", Text),
+    Column("file_hash", String(64), nullable=False), Column("grader_version", String(50), nullable=False),
+    ForeignKeyConstraint(["student", "problem"], ["submissions.student", "submissions.problem"], ondelete="CASCADE"),
+)
+skipped = Table("skipped", metadata, Column("path", String(500), primary_key=True), Column("reason", Text, nullable=False))
+overrides = Table(
+    "overrides", metadata,
+    Column("student", String(200), primary_key=True), Column("problem", String(50), primary_key=True),
+    Column("part", String(100), primary_key=True), Column("score", Float, nullable=False),
+    Column("max_score", Float, nullable=False), Column("reason", Text, nullable=False),
+    Column("set_at", String(30), nullable=False),
+)
+grade_log = Table(
+    "grade_log", metadata, Column("id", Integer, primary_key=True, autoincrement=True),
+    Column("student", String(200), nullable=False), Column("problem", String(50), nullable=False),
+    Column("file_hash", String(64), nullable=False), Column("grading_hash", String(64), nullable=False),
+    Column("grader_version", String(50), nullable=False), Column("graded_at", String(30), nullable=False),
+    sqlite_autoincrement=True,
+)
+GRADEBOOK_TABLES = (meta, students, submissions, parts, skipped, overrides, grade_log)
+
+#: every attempt, with its file; ``state`` is ``queued`` until its grade is written
+server_submissions = Table(
+    "server_submissions", metadata,
+    Column("id", Integer, primary_key=True, autoincrement=True),
+    Column("student", String(200), nullable=False), Column("problem", String(50), nullable=False),
+    Column("suffix", String(10), nullable=False), Column("file_hash", String(64), nullable=False),
+    Column("grading_hash", String(64), nullable=False), Column("grader_version", String(50), nullable=False),
+    Column("data", LargeBinary, nullable=False), Column("state", String(10), nullable=False),
+    Column("result", Text), Column("created_at", String(30), nullable=False), Column("graded_at", String(30)),
+    UniqueConstraint("student", "problem", "file_hash", "grading_hash", "grader_version", name="one_grade_per_content"),
+    CheckConstraint("state IN ('queued', 'graded')"),
+    sqlite_autoincrement=True,
+)
+
+
+def _now() -> str:
+    return time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime()) + "Z"
+
+
+def database_url(db: str) -> str:
+    """A path is a SQLite file; anything with ``://`` is an SQLAlchemy URL."""
+    if "://" in db:
+        return db
+    return f"sqlite:///{Path(db).resolve()}"
+
+
+@dataclass(frozen=True)
+class Attempt:
+    id: int
+    student: str
+    problem: str
+    suffix: str
+    file_hash: str
+    state: str
+    result: dict | None
+    created_at: str
+    data: bytes
+
+    @property
+    def graded(self) -> bool:
+        return self.state == "graded"
+
+
+class Database:
+    """The server's gradebook; ``Database("hw7-serve.sqlite")`` or ``Database("postgresql+psycopg://...")``."""
+
+    def __init__(self, db: str) -> None:
+        self.url = database_url(db)
+        self.sqlite_path: Path | None = None
+        self._write = threading.Lock()
+        if self.url.startswith("sqlite:///"):
+            from lagrade.bulk.store import Store
+
+            self.sqlite_path = Path(self.url.removeprefix("sqlite:///"))
+            Store(self.sqlite_path).close()  # the gradebook schema, exactly as `lagrade grade` makes it
+            self.engine: Engine = create_engine(self.url, connect_args={"timeout": 30, "check_same_thread": False})
+            event.listen(self.engine, "connect", _sqlite_pragmas)
+            metadata.create_all(self.engine, tables=[server_submissions])
+        else:
+            self.engine = create_engine(self.url, pool_pre_ping=True)
+            metadata.create_all(self.engine)
+        with self._write, self.engine.begin() as c:
+            if self._meta(c, "schema_version") is None:
+                self._set_meta(c, "schema_version", str(SCHEMA_VERSION))
+
+    def close(self) -> None:
+        self.engine.dispose()
+
+    # ------------------------------------------------------------------ meta
+
+    @staticmethod
+    def _meta(c, key: str) -> str | None:
+        return c.execute(select(meta.c.value).where(meta.c.key == key)).scalar_one_or_none()
+
+    @staticmethod
+    def _set_meta(c, key: str, value: str) -> None:
+        if c.execute(select(meta.c.key).where(meta.c.key == key)).first() is None:
+            c.execute(insert(meta).values(key=key, value=value))
+        else:
+            c.execute(update(meta).where(meta.c.key == key).values(value=value))
+
+    def meta(self, key: str) -> str | None:
+        with self.engine.connect() as c:
+            return self._meta(c, key)
+
+    def setup(self, assignment_json: str, totals: dict[str, float], version: str, roster: tuple[str, ...] | None) -> None:
+        """What the gradebook's readers need: the assignment, the problems' totals, the roster."""
+        with self._write, self.engine.begin() as c:
+            self._set_meta(c, "assignment", assignment_json)
+            self._set_meta(c, "problem_totals", json.dumps(totals))
+            self._set_meta(c, "grader_version", version)
+            self._set_meta(c, "root", "lagrade serve")
+            for name in roster or ():
+                self._add_student(c, name)
+
+    def secret(self) -> bytes:
+        """The key that signs this server's tokens, made the first time (kept in ``meta``)."""
+        with self._write, self.engine.begin() as c:
+            value = self._meta(c, "server_secret")
+            if value is None:
+                value = secrets.token_hex(32)
+                self._set_meta(c, "server_secret", value)
+        return bytes.fromhex(value)
+
+    @staticmethod
+    def _add_student(c, name: str) -> None:
+        if c.execute(select(students.c.student).where(students.c.student == name)).first() is None:
+            c.execute(insert(students).values(student=name))
+
+    # ------------------------------------------------------------------ attempts
+
+    def submit(self, *, student: str, problem: str, suffix: str, data: bytes, file_hash: str, grading_hash: str,
+               version: str) -> tuple[int, bool]:
+        """Store an attempt before it is graded: (its id, True if new). The same content for the same
+        grading is the same attempt (a resubmission is idempotent)."""
+        key = (server_submissions.c.student == student, server_submissions.c.problem == problem,
+               server_submissions.c.file_hash == file_hash, server_submissions.c.grading_hash == grading_hash,
+               server_submissions.c.grader_version == version)
+        with self._write, self.engine.begin() as c:
+            found = c.execute(select(server_submissions.c.id).where(*key)).scalar_one_or_none()
+            if found is not None:
+                return found, False
+            try:
+                with c.begin_nested():
+                    new = c.execute(insert(server_submissions).values(
+                        student=student, problem=problem, suffix=suffix, data=data, file_hash=file_hash,
+                        grading_hash=grading_hash, grader_version=version, state="queued", created_at=_now()))
+            except IntegrityError:  # another server process on the same database stored it first
+                return c.execute(select(server_submissions.c.id).where(*key)).scalar_one(), False
+            self._add_student(c, student)
+            return new.inserted_primary_key[0], True
+
+    def attempt(self, sid: int) -> Attempt | None:
+        with self.engine.connect() as c:
+            row = c.execute(select(server_submissions).where(server_submissions.c.id == sid)).first()
+        return _attempt(row) if row is not None else None
+
+    def attempts(self, student: str, problem: str | None = None, limit: int = 50) -> list[Attempt]:
+        q = select(server_submissions).where(server_submissions.c.student == student)
+        if problem is not None:
+            q = q.where(server_submissions.c.problem == problem)
+        with self.engine.connect() as c:
+            rows = c.execute(q.order_by(server_submissions.c.id.desc()).limit(limit)).fetchall()
+        return [_attempt(r) for r in rows]
+
+    def queued(self) -> list[int]:
+        with self.engine.connect() as c:
+            return list(c.execute(select(server_submissions.c.id).where(server_submissions.c.state == "queued")
+                                  .order_by(server_submissions.c.id)).scalars())
+
+    def counts(self) -> dict[str, int]:
+        with self.engine.connect() as c:
+            rows = c.execute(select(server_submissions.c.state, func.count()).group_by(server_submissions.c.state))
+            return {state: n for state, n in rows}
+
+    def finish(self, sid: int, result: dict[str, Any], check: dict[str, Any]) -> None:
+        """Write one attempt's grade: the attempt itself, and the gradebook if it is the student's
+        latest graded attempt at the problem; one transaction."""
+        with self._write, self.engine.begin() as c:
+            row = c.execute(select(server_submissions).where(server_submissions.c.id == sid)).first()
+            if row is None or row.state == "graded":
+                return
+            now = _now()
+            c.execute(update(server_submissions).where(server_submissions.c.id == sid)
+                      .values(state="graded", result=json.dumps(check), graded_at=now))
+            later = c.execute(select(func.max(server_submissions.c.id)).where(
+                server_submissions.c.student == row.student, server_submissions.c.problem == row.problem,
+                server_submissions.c.state == "graded", server_submissions.c.id > sid)).scalar_one_or_none()
+            if later is not None:
+                return
+            who = (row.student, row.problem)
+            c.execute(delete(parts).where(parts.c.student == who[0], parts.c.problem == who[1]))
+            c.execute(delete(submissions).where(submissions.c.student == who[0], submissions.c.problem == who[1]))
+            c.execute(insert(submissions).values(
+                student=row.student, problem=row.problem, path=f"{row.student}/{row.problem}{row.suffix}",
+                file_hash=row.file_hash, grading_hash=row.grading_hash, grader_version=row.grader_version,
+                outcome=result["outcome"], status=result["status"], reason=result["reason"], score=result["score"],
+                max_score=result["max_score"], problems=json.dumps(result["problems"]),
+                stdout=result.get("stdout", ""), source=row.data.decode("utf-8", "replace"),
+                seconds=result["seconds"], graded_at=now, attempts=1, jail=result.get("jail")))
+            if result["parts"]:
+                c.execute(insert(parts), [
+                    {"student": row.student, "problem": row.problem, "part": p["part"], "verdict": p["verdict"],
+                     "score": p["score"], "max_score": p["max_score"], "method": p["method"],
+                     "feedback": p["feedback"], "answer_text": p.get("answer_text"),
+                     "answer_mathml": p.get("answer_mathml"), "file_hash": row.file_hash,
+                     "grader_version": row.grader_version} for p in result["parts"]])
+            c.execute(insert(grade_log).values(student=row.student, problem=row.problem, file_hash=row.file_hash,
+                                               grading_hash=row.grading_hash, grader_version=row.grader_version,
+                                               graded_at=now))
+
+    # ------------------------------------------------------------------ the class
+
+    def gradebook(self):
+        """The class as the exports and the HTML report see it (:class:`lagrade.bulk.gradebook.Gradebook`)."""
+        if self.sqlite_path is not None:
+            from lagrade.bulk.gradebook import load_gradebook
+
+            return load_gradebook(self.sqlite_path)  # the very reader of `lagrade export`
+        return self._gradebook()
+
+    def _gradebook(self):
+        """The same Gradebook read through SQLAlchemy (PostgreSQL), as load_gradebook builds it."""
+        from lagrade.bulk.assignment import parse_assignment, points
+        from lagrade.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
+
+        with self.engine.connect() as c:
+            assignment = parse_assignment(json.loads(self._meta(c, "assignment")), self.url)
+            totals = json.loads(self._meta(c, "problem_totals") or "{}")
+            subs = {(r.student, r.problem): r for r in c.execute(select(submissions))}
+            by: dict[tuple[str, str], list[dict]] = {}
+            q = select(parts, submissions.c.jail).join(
+                submissions, (parts.c.student == submissions.c.student) & (parts.c.problem == submissions.c.problem))
+            for r in c.execute(q):
+                by.setdefault((r.student, r.problem), []).append(dict(r._mapping))
+            names = sorted(set(c.execute(select(students.c.student)).scalars()) | {s for s, _ in subs})
+            version = self._meta(c, "grader_version") or ""
+        out = []
+        for name in names:
+            grades = {}
+            for ap in assignment.problems:
+                row, ps = subs.get((name, ap.id)), by.get((name, ap.id), [])
+                pts, possible = points(ap, ps, totals.get(ap.id, 0.0))
+                grades[ap.id] = (ProblemGrade(ap.id, 0.0, possible, False, reason="no file handed in") if row is None
+                                 else ProblemGrade(ap.id, pts, possible, True, row.outcome, row.status, row.reason,
+                                                   json.loads(row.problems), ps, row.source, row.path))
+            out.append(StudentGrade(name, grades))
+        return Gradebook(assignment, out, [], version)
+
+
+def _attempt(row) -> Attempt:
+    return Attempt(row.id, row.student, row.problem, row.suffix, row.file_hash, row.state,
+                   json.loads(row.result) if row.result else None, row.created_at, row.data)
+
+
+def _sqlite_pragmas(dbapi_connection, _record) -> None:
+    cur = dbapi_connection.cursor()
+    cur.execute("PRAGMA foreign_keys=ON")
+    cur.execute("PRAGMA synchronous=FULL")
+    cur.close()

@@ -1,0 +1,289 @@
+"""The grading queue: stored attempts go to bulk grading's warm grader processes, one at a time each.
+
+The same graders as ``lagrade grade`` (:class:`lagrade.bulk.worker.GraderProcess`: problems loaded
+and references derived once, every ``answer.py`` run in the jail by the grader's clean zygote), fed
+the same jobs (:meth:`lagrade.bulk.runner.Plan.job`), with the same deadline and the same verdicts
+when a grader dies or overruns. What differs from :func:`lagrade.bulk.runner.run_local` is only
+that the queue never ends: attempts arrive while the graders work, and the graders stay warm.
+
+A request waits for its attempt's grade on an asyncio future that this thread resolves.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import logging
+import os
+import tempfile
+import threading
+import time
+from collections import deque
+from multiprocessing.connection import wait
+from pathlib import Path
+from typing import Any
+
+from lagrade.bulk.assignment import Assignment
+from lagrade.bulk.layout import Submission
+from lagrade.bulk.runner import Plan, plan, problem_totals
+from lagrade.bulk.worker import (
+    GraderProcess,
+    WorkerDied,
+    failed_result,
+    hard_deadline,
+    stop_all,
+)
+from lagrade.result import CheckResult, PartResult
+from lagrade.server.db import Attempt, Database
+
+log = logging.getLogger("lagrade.server")
+
+
+def make_plan(assignment: Assignment, problems_dirs: tuple[Path, ...] = ()) -> Plan:
+    """Bulk grading's plan of the assignment (problem sources, part weights, grading keys), no folder."""
+    with tempfile.TemporaryDirectory(prefix="lagrade-serve-") as empty:
+        return plan(Path(empty), assignment, problems_dirs)
+
+
+def totals(p: Plan) -> dict[str, float]:
+    return problem_totals(p)
+
+
+def check_json(result: dict[str, Any], problem=None) -> dict[str, Any]:
+    """A grader's result as ``lagrade check --json`` prints it, plus how each part was read (the
+    student's own value, as terminal text and MathML) and how the file ran.
+
+    The graders keep each value as sympy text (the gradebook's); read back here without eval
+    (:func:`lagrade.answers.text.parse_math`), it gives the LaTeX ``read_as`` of ``check --json`` and
+    the terminal text of a local check. A value that does not read back keeps its sympy text."""
+    checked = CheckResult(problem=result["problem"], score=result["score"], max_score=result["max_score"],
+                          parts=[PartResult.model_validate(p) for p in result["parts"]],
+                          problems=list(result["problems"]))
+    shown = {p["part"]: p["answer_text"] for p in result["parts"] if p.get("answer_text")}
+    for part in checked.parts:
+        if part.part in shown and problem is not None:
+            part.read_as, shown[part.part] = _read_back(problem, shown[part.part])
+    out = json.loads(checked.model_dump_json())
+    out["read_as_text"] = shown
+    out["read_as_mathml"] = {p["part"]: p["answer_mathml"] for p in result["parts"] if p.get("answer_mathml")}
+    out["status"], out["outcome"] = result["status"], result["outcome"]
+    return out
+
+
+def _read_back(problem, text: str) -> tuple[str | None, str]:
+    """(LaTeX, terminal text) of a value printed as sympy text; (None, text) if it does not read back."""
+    from lagrade.notation import parse_math
+    from lagrade.readback import as_latex, as_unicode
+
+    coords = sorted({c.name for s in problem.systems for c in s.coordinates})
+    try:
+        value = parse_math(text, coords + [f"p_{c}" for c in coords])
+        return as_latex(value), as_unicode(value)
+    except Exception:  # noqa: BLE001  (a value clipped for length, a form the reader does not take)
+        return None, text
+
+
+class GradingQueue:
+    """A thread that owns ``workers`` warm grader processes and grades stored attempts in order."""
+
+    def __init__(self, db: Database, p: Plan, workers: int, scheduler: str | None = None,
+                 problems: dict | None = None) -> None:
+        """``scheduler``: grade on this Dask cluster (``tcp://host:8786``) as ``lagrade grade --scheduler``
+        does (a warm grader process per Dask worker thread), instead of ``workers`` local processes."""
+        self.db, self.plan, self.workers, self.scheduler = db, p, workers, scheduler
+        self.problems = problems or {}
+        self._jobs: deque[int] = deque()
+        self._lock = threading.Lock()
+        self._waiters: dict[int, list[tuple[asyncio.AbstractEventLoop, asyncio.Future]]] = {}
+        self._wake_r, self._wake_w = os.pipe()
+        self._stopping = False
+        self._thread: threading.Thread | None = None
+        self.graded = 0
+
+    # ------------------------------------------------------------------ from the app
+
+    def start(self) -> None:
+        """Start the graders, and queue every attempt stored but not graded (a killed server's)."""
+        for sid in self.db.queued():
+            self.put(sid)
+        target = self._run if self.scheduler is None else self._run_dask
+        self._thread = threading.Thread(target=target, name="lagrade-grading", daemon=True)
+        self._thread.start()
+
+    def put(self, sid: int) -> None:
+        with self._lock:
+            if sid not in self._jobs:
+                self._jobs.append(sid)
+        os.write(self._wake_w, b"x")
+
+    def pending(self) -> int:
+        with self._lock:
+            return len(self._jobs)
+
+    async def wait(self, sid: int, timeout: float) -> Attempt | None:
+        """The attempt once graded, or None if it is still queued after ``timeout`` seconds."""
+        loop = asyncio.get_running_loop()
+        fut = loop.create_future()
+        with self._lock:
+            self._waiters.setdefault(sid, []).append((loop, fut))
+        try:
+            att = await asyncio.to_thread(self.db.attempt, sid)  # graded before we started waiting?
+            if att is not None and att.graded:
+                return att
+            try:
+                await asyncio.wait_for(fut, timeout)
+            except TimeoutError:
+                return None
+            return await asyncio.to_thread(self.db.attempt, sid)
+        finally:
+            with self._lock:
+                left = [w for w in self._waiters.get(sid, []) if w[1] is not fut]
+                if left:
+                    self._waiters[sid] = left
+                else:
+                    self._waiters.pop(sid, None)
+
+    def stop(self) -> None:
+        self._stopping = True
+        os.write(self._wake_w, b"x")
+        if self._thread is not None:
+            self._thread.join(timeout=30)
+        for fd in (self._wake_r, self._wake_w):
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+    # ------------------------------------------------------------------ the thread
+
+    def _job(self, sid: int) -> dict[str, Any] | None:
+        att = self.db.attempt(sid)
+        if att is None or att.graded:
+            return None
+        sub = Submission(att.student, att.problem, Path(f"{att.problem}{att.suffix}"), att.file_hash, att.data)
+        job = self.plan.job(sub)
+        job["server_id"] = sid
+        return job
+
+    def _next(self) -> dict[str, Any] | None:
+        while True:
+            with self._lock:
+                if not self._jobs:
+                    return None
+                sid = self._jobs.popleft()
+            try:
+                job = self._job(sid)
+            except Exception:
+                log.exception("attempt %s could not be read; it stays queued", sid)
+                continue
+            if job is not None:
+                return job
+
+    def _done(self, job: dict[str, Any], result: dict[str, Any]) -> None:
+        sid = job["server_id"]
+        try:
+            self.db.finish(sid, result, check_json(result, self.problems.get(job["problem"])))
+            self.graded += 1
+        except Exception:
+            log.exception("the grade of attempt %s could not be written", sid)
+        with self._lock:
+            waiters = self._waiters.pop(sid, [])
+        for loop, fut in waiters:
+            loop.call_soon_threadsafe(_resolve, fut)
+
+    def _run(self) -> None:
+        sources = self.plan.sources
+        graders = [GraderProcess(sources) for _ in range(self.workers)]
+        try:
+            while not self._stopping:
+                for g in graders:
+                    if g.job is None:
+                        job = self._next()
+                        if job is None:
+                            break
+                        g.submit(job)
+                busy = [g for g in graders if g.job is not None]
+                ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=1.0)
+                if self._wake_r in ready:
+                    os.read(self._wake_r, 4096)
+                now = time.monotonic()
+                for i, g in enumerate(graders):
+                    job = g.job
+                    if job is None:
+                        continue
+                    if g.recv_conn in ready:
+                        try:
+                            msg = g.recv_conn.recv()
+                        except (EOFError, OSError):
+                            msg = None
+                        if msg is None:
+                            g.kill()
+                            graders[i] = GraderProcess(sources)
+                            self._done(job, failed_result(job, job["parts"], "grader-crash",
+                                                          "the grader process died while grading this file (it may "
+                                                          "have used too much memory); please report it",
+                                                          now - g.started))
+                        elif "ready" in msg:
+                            if not msg["ready"]:
+                                raise WorkerDied(f"a grader process could not start: {msg.get('error')}")
+                            g.ready, g.started = True, now
+                        else:
+                            g.job = None
+                            self._done(job, msg)
+                    elif g.ready and now - g.started > hard_deadline(job["limits"]):
+                        g.kill()
+                        graders[i] = GraderProcess(sources)
+                        self._done(job, failed_result(job, job["parts"], "grader-timeout",
+                                                      f"grading this file did not finish in "
+                                                      f"{hard_deadline(job['limits']):g} s", now - g.started))
+        except Exception:
+            log.exception("the grading thread stopped; queued attempts are graded when the server starts again")
+        finally:
+            for g in graders:
+                if g.job is not None:
+                    g.kill()  # its attempt stays queued in the database
+            stop_all([g for g in graders if g.job is None])
+
+
+    def _run_dask(self) -> None:
+        """The same queue on a Dask cluster: bulk grading's Dask task (``dask_grade``) per attempt."""
+        import inspect
+
+        from distributed import Client
+
+        from lagrade.bulk.runner import dask_grade, dask_warm
+
+        client = Client(self.scheduler)
+        flying: dict[Any, dict[str, Any]] = {}
+        try:
+            many = "n_workers" in inspect.signature(client.scheduler_info).parameters
+            info = client.scheduler_info(n_workers=-1) if many else client.scheduler_info()
+            for addr, w in info["workers"].items():
+                client.run(dask_warm, self.plan.sources, w.get("nthreads", 1), workers=[addr])
+            sources = client.scatter(self.plan.sources, broadcast=True)
+            while not self._stopping:
+                while (job := self._next()) is not None:
+                    flying[client.submit(dask_grade, job, sources, pure=False, retries=1)] = job
+                if wait([self._wake_r], timeout=0.2):
+                    os.read(self._wake_r, 4096)
+                for fut in [f for f in flying if f.done()]:
+                    job = flying.pop(fut)
+                    try:
+                        result = fut.result()
+                    except Exception as exc:  # noqa: BLE001  (a Dask worker lost for good)
+                        result = failed_result(job, job["parts"], "grader-crash",
+                                               f"the Dask worker grading this file failed ({type(exc).__name__}: "
+                                               f"{exc})", 0.0)
+                    self._done(job, result)
+                    fut.release()
+        except Exception:
+            log.exception("grading on the Dask cluster stopped; queued attempts are graded when the server starts again")
+        finally:
+            for fut in flying:  # their attempts stay queued in the database
+                fut.cancel()
+            client.close()
+
+
+def _resolve(fut: asyncio.Future) -> None:
+    if not fut.done():
+        fut.set_result(True)

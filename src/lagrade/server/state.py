@@ -1,0 +1,165 @@
+"""The state of one running server, shared by the API and the pages: the assignment, its problems,
+the database, the grading queue, the token secret, the rate limits, and who sent a request."""
+
+from __future__ import annotations
+
+import hmac
+import math
+import threading
+from dataclasses import dataclass
+from pathlib import Path
+
+from fastapi import HTTPException, Request
+
+from lagrade.server.config import ServerConfig
+from lagrade.server.limits import RateLimit
+from lagrade.server.tokens import INSTRUCTOR, csrf_token, student_of
+
+SESSION_COOKIE = "lagrade_session"
+LIST_KINDS = ("eom", "hamilton_eqs", "expression_set", "names", "conserved")
+
+
+@dataclass
+class Who:
+    """Who sent a request: the student id, and the session token if it came by cookie (a browser)."""
+
+    student: str
+    session: str | None = None
+
+    @property
+    def instructor(self) -> bool:
+        return self.student == INSTRUCTOR
+
+
+class Server:
+    """The state of one running server."""
+
+    def __init__(self, config: ServerConfig) -> None:
+        from lagrade.bulk.assignment import (
+            AssignmentError,
+            check_against_problems,
+            load_assignment,
+        )
+        from lagrade.library import load_problem
+        from lagrade.server.db import Database
+        from lagrade.server.grading import make_plan, totals
+
+        self.config = config
+        try:
+            self.assignment = load_assignment(config.assignment)
+            check_against_problems(self.assignment, config.problems_dirs)
+        except AssignmentError as exc:
+            raise ValueError(str(exc)) from None
+        self.plan = make_plan(self.assignment, config.problems_dirs)
+        self.problems = {pid: load_problem(pid, config.problems_dirs) for pid in self.assignment.ids}
+        self.db = Database(config.db)
+        self.db.setup(self.assignment.canonical_json(), totals(self.plan), self.plan.version, config.roster)
+        self.secret = self.db.secret()
+        self.roster = set(config.roster) if config.roster is not None else None
+        self.check_limit = RateLimit(config.checks_per_minute, config.check_burst)
+        self.preview_limit = RateLimit(config.previews_per_minute, config.preview_burst)
+        self.preview_slot = threading.Lock()
+        self.queue = None
+        # made once, here: the same text for every request
+        self._texts = {(command, pid): self._print(command, pid) for pid in self.problems
+                       for command in ("show", "template")}
+
+    def start(self) -> None:
+        from lagrade.server.grading import GradingQueue
+
+        self.queue = GradingQueue(self.db, self.plan, self.config.workers, self.config.scheduler, self.problems)
+        self.queue.start()
+
+    def stop(self) -> None:
+        if self.queue is not None:
+            self.queue.stop()
+        self.db.close()
+
+    # ------------------------------------------------------------------ problems
+
+    def problem(self, pid: str):
+        if pid not in self.problems:
+            raise HTTPException(404, f"no problem {pid!r} in this assignment (its problems: "
+                                     f"{', '.join(self.assignment.ids)})")
+        return self.problems[pid]
+
+    def text(self, command: str, pid: str) -> str:
+        """What ``lagrade show`` / ``lagrade template`` print for the problem."""
+        return self._texts[(command, pid)]
+
+    def _print(self, command: str, pid: str) -> str:
+        """What a student's ``lagrade show`` / ``template`` prints (the same functions)."""
+        from lagrade.describe import show_text, template_text
+
+        problem = self.problems[pid]
+        return show_text(problem) + "\n" if command == "show" else template_text(problem)
+
+    def fields(self, pid: str) -> list[dict]:
+        """The parts as the student page asks for them: one text, a list (one per line) or keyed texts."""
+        from lagrade.spec import KINDS
+
+        problem = self.problems[pid]
+        out = []
+        for part in problem.parts:
+            keys = None
+            if part.kind == "expression" and isinstance(part.reference, dict):
+                keys = list(part.reference)  # the keys are public (`lagrade show` lists them), never the values
+            elif part.kind == "trajectory":
+                keys = [c.name for c in problem.system(part.system).coordinates]
+            shape = "dict" if keys else ("list" if part.kind in LIST_KINDS else "text")
+            out.append({"name": part.name, "kind": part.kind, "prompt": part.prompt or part.kind,
+                        "expects": KINDS[part.kind].expects, "shape": shape, "keys": keys or [], "weight": part.weight})
+        return out
+
+    # ------------------------------------------------------------------ who is asking
+
+    def identify(self, request: Request) -> Who:
+        """The Bearer token, else the session cookie; 401 without either (unless the server is open)."""
+        header = request.headers.get("authorization", "")
+        if header:
+            scheme, _, token = header.partition(" ")
+            student = student_of(self.secret, token) if scheme.lower() == "bearer" else None
+            if student is None:
+                raise HTTPException(401, "the token is not one this server issued; expected 'Authorization: "
+                                         "Bearer <token>' with the token from your instructor",
+                                    headers={"WWW-Authenticate": "Bearer"})
+            return Who(self._allowed(student))
+        cookie = request.cookies.get(SESSION_COOKIE)
+        if cookie:
+            student = student_of(self.secret, cookie)
+            if student is not None:
+                return Who(self._allowed(student), cookie)
+        if self.config.open:
+            return Who("guest")
+        raise HTTPException(401, "no token; expected 'Authorization: Bearer <token>' (or sign in on the web page)",
+                            headers={"WWW-Authenticate": "Bearer"})
+
+    def _allowed(self, student: str) -> str:
+        if self.roster is not None and student not in self.roster and student != INSTRUCTOR \
+                and not student.startswith("guest-"):
+            raise HTTPException(401, f"{student!r} is not on this server's roster; ask your instructor",
+                                headers={"WWW-Authenticate": "Bearer"})
+        if student.startswith("guest-") and not self.config.open:
+            raise HTTPException(401, "guest sessions exist only on an --open server",
+                                headers={"WWW-Authenticate": "Bearer"})
+        return student
+
+    def require_csrf(self, who: Who, sent: str | None) -> None:
+        """A request authenticated by the browser's cookie must carry its session's CSRF token."""
+        if who.session is None:
+            return  # a Bearer token (or an open server's anonymous guest): nothing ambient to abuse
+        if not sent or not hmac.compare_digest(sent, csrf_token(self.secret, who.session)):
+            raise HTTPException(403, "missing or wrong CSRF token; reload the page and submit again")
+
+    def csrf(self, who: Who) -> str:
+        return csrf_token(self.secret, who.session) if who.session else ""
+
+    def limit(self, who: Who, preview: bool = False) -> None:
+        wait = (self.preview_limit if preview else self.check_limit).take(who.student)
+        if wait:
+            seconds = max(1, math.ceil(wait))
+            raise HTTPException(429, f"too many {'previews' if preview else 'checks'}; try again in {seconds} s",
+                                headers={"Retry-After": str(seconds)})
+
+
+TEMPLATES = Path(__file__).parent / "templates"

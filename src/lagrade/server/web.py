@@ -1,0 +1,210 @@
+"""The student page (and the instructor's live class page): Jinja2 templates, no script or style
+fetched from anywhere; math is presentation MathML, which browsers render natively."""
+
+from __future__ import annotations
+
+import json
+import secrets
+import tempfile
+from html import escape
+from pathlib import Path
+
+from fastapi import APIRouter, HTTPException, Request
+from fastapi.responses import HTMLResponse, RedirectResponse, Response
+from fastapi.templating import Jinja2Templates
+
+from lagrade.server.answers import AnswerTextError, to_toml
+from lagrade.server.api import submit
+from lagrade.server.state import SESSION_COOKIE, TEMPLATES, Who
+from lagrade.server.tokens import issue, student_of
+
+router = APIRouter(include_in_schema=False)
+templates = Jinja2Templates(directory=str(TEMPLATES))
+#: a page may use its own inline script and style, and nothing from elsewhere
+CSP = ("default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src 'self' data:; "
+       "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'")
+
+
+def _server(request: Request):
+    return request.app.state.server
+
+
+def _page(request: Request, name: str, context: dict, status: int = 200, cookie: str | None = None) -> HTMLResponse:
+    response = templates.TemplateResponse(request, name, context, status_code=status)
+    response.headers["Content-Security-Policy"] = CSP
+    response.headers["X-Content-Type-Options"] = "nosniff"
+    if cookie:
+        _set_session(response, cookie)
+    return response
+
+
+def _set_session(response: Response, token: str) -> None:
+    response.set_cookie(SESSION_COOKIE, token, httponly=True, samesite="strict", max_age=180 * 24 * 3600)
+
+
+def _who(request: Request) -> tuple[Who | None, str | None]:
+    """(who, a new guest cookie to set): None when not signed in on a server that needs tokens."""
+    server = _server(request)
+    try:
+        who = server.identify(request)
+    except HTTPException:
+        return None, None
+    if who.session is None and server.config.open:  # a browser on an open server: a guest session of its own
+        token = issue(server.secret, f"guest-{secrets.token_hex(6)}")
+        return Who(student_of(server.secret, token), token), token
+    if who.session is None:
+        return None, None  # a Bearer header is for the API; the pages want a signed-in browser
+    return who, None
+
+
+@router.get("/", response_class=HTMLResponse)
+def index(request: Request):
+    server = _server(request)
+    who, cookie = _who(request)
+    if who is None:
+        return _page(request, "login.html", {"title": "Sign in", "error": None})
+    items = [{"id": pid, "title": p.title, "parts": len(p.parts)} for pid, p in server.problems.items()]
+    return _page(request, "index.html", {"title": server.assignment.title or server.assignment.name, "who": who,
+                                         "problems": items, "csrf": server.csrf(who)}, cookie=cookie)
+
+
+@router.get("/login")
+def login_link(request: Request, token: str = ""):
+    """The sign-in link ``/login?token=...``: the token becomes this browser's session."""
+    return _login(request, token)
+
+
+@router.post("/login")
+async def login_form(request: Request):
+    form = await request.form(max_files=0, max_fields=3)
+    return _login(request, str(form.get("token", "")))
+
+
+def _login(request: Request, token: str):
+    server = _server(request)
+    student = student_of(server.secret, token)
+    try:
+        if student is None:
+            raise HTTPException(401, "this is not a token this server issued; paste the token from your instructor")
+        server._allowed(student)
+    except HTTPException as exc:
+        return _page(request, "login.html", {"title": "Sign in", "error": exc.detail}, status=401)
+    response = RedirectResponse("/", status_code=303)
+    _set_session(response, token.strip())
+    return response
+
+
+@router.post("/logout")
+async def logout(request: Request):
+    server = _server(request)
+    who, _ = _who(request)
+    form = await request.form(max_files=0, max_fields=3)
+    if who is not None:
+        server.require_csrf(who, str(form.get("csrf", "")))
+    response = RedirectResponse("/", status_code=303)
+    response.delete_cookie(SESSION_COOKIE)
+    return response
+
+
+def _problem_context(request: Request, who: Who, pid: str) -> dict:
+    server = _server(request)
+    p = server.problem(pid)
+    return {"title": f"Problem {pid}", "who": who, "pid": pid, "problem": p, "show": server.text("show", pid),
+            "template": server.text("template", pid), "fields": server.fields(pid), "csrf": server.csrf(who),
+            "attempts": server.db.attempts(who.student, pid, limit=20), "result": None, "error": None,
+            "values": {}}
+
+
+@router.get("/p/{pid}", response_class=HTMLResponse)
+def problem_page(pid: str, request: Request, attempt: int | None = None):
+    server = _server(request)
+    who, cookie = _who(request)
+    if who is None:
+        return RedirectResponse("/", status_code=303)
+    ctx = _problem_context(request, who, pid)
+    if attempt is not None:
+        att = server.db.attempt(attempt)
+        if att is None or att.student != who.student or att.problem != pid:
+            raise HTTPException(404, f"no attempt {attempt} of yours at problem {pid}")
+        ctx["result"] = {**att.result, "submission_id": att.id, "state": "graded"} if att.graded else \
+            {"submission_id": att.id, "state": "queued"}
+    return _page(request, "problem.html", ctx, cookie=cookie)
+
+
+@router.post("/p/{pid}/check", response_class=HTMLResponse)
+async def problem_check(pid: str, request: Request):
+    server = _server(request)
+    who, _ = _who(request)
+    if who is None:
+        raise HTTPException(401, "not signed in; open the sign-in link your instructor gave you")
+    server.problem(pid)
+    form = await request.form(max_files=1, max_fields=200)
+    server.require_csrf(who, str(form.get("csrf", "")))
+    ctx = _problem_context(request, who, pid)
+    upload = form.get("file")
+    values: dict = {}
+    if upload is not None and not isinstance(upload, str) and upload.filename:
+        suffix = Path(upload.filename).suffix
+        if suffix not in (".py", ".toml"):
+            ctx["error"] = f"{upload.filename!r} is neither answer.py nor answer.toml"
+            return _page(request, "problem.html", ctx, status=422)
+        data = await upload.read()
+    else:
+        for f in ctx["fields"]:
+            name = f"f:{f['name']}"
+            if f["shape"] == "dict":
+                d = {k: str(form.get(f"{name}:{k}", "")).strip() for k in f["keys"]}
+                if any(d.values()):
+                    values[f["name"]] = {k: v for k, v in d.items() if v}
+            elif f["shape"] == "list":
+                items = [line.strip() for line in str(form.get(name, "")).splitlines() if line.strip()]
+                if items:
+                    values[f["name"]] = items
+            elif str(form.get(name, "")).strip():
+                values[f["name"]] = str(form.get(name)).strip()
+        ctx["values"] = values
+        if not values:
+            ctx["error"] = "type at least one part, or choose an answer.py / answer.toml file"
+            return _page(request, "problem.html", ctx, status=422)
+        try:
+            suffix, data = ".toml", to_toml(values)
+        except AnswerTextError as exc:
+            ctx["error"] = str(exc)
+            return _page(request, "problem.html", ctx, status=422)
+    try:
+        response = await submit(server, who, pid, suffix, data)
+    except HTTPException as exc:  # a rate limit: said on the page, the typed answer kept
+        ctx["error"] = exc.detail
+        return _page(request, "problem.html", ctx, status=exc.status_code)
+    ctx["result"] = json.loads(response.body)
+    ctx["attempts"] = server.db.attempts(who.student, pid, limit=20)
+    return _page(request, "problem.html", ctx)
+
+
+@router.get("/class/{path:path}")
+def class_page(path: str, request: Request):
+    """The instructor's live class page: the HTML report of ``lagrade report --html``, made now."""
+    server = _server(request)
+    who, _ = _who(request)
+    if who is None or not who.instructor:
+        raise HTTPException(401, "the class page needs the instructor's token (lagrade tokens prints it)")
+    from lagrade.bulk.html_report import write_report
+
+    with tempfile.TemporaryDirectory(prefix="lagrade-class-") as tmp:
+        try:
+            write_report(server.db.gradebook(), Path(tmp))
+        except Exception as exc:  # noqa: BLE001  (nothing graded yet, a database away)
+            return HTMLResponse(f"<p>no class report yet: {escape(str(exc))}</p>", status_code=503)
+        target = (Path(tmp) / (path or "index.html")).resolve()
+        if not target.is_relative_to(Path(tmp).resolve()) or not target.is_file():
+            raise HTTPException(404, f"no page {path!r} in the class report")
+        kind = "text/html; charset=utf-8" if target.suffix == ".html" else "application/octet-stream"
+        response = Response(target.read_bytes(), media_type=kind)
+    response.headers["Content-Security-Policy"] = CSP
+    return response
+
+
+@router.get("/healthz")
+def health(request: Request) -> dict:
+    server = _server(request)
+    return {"ok": True, "queued": server.queue.pending() if server.queue else 0}

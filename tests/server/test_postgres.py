@@ -1,0 +1,62 @@
+"""The server on a real PostgreSQL database: runs when LAGRADE_TEST_POSTGRES_URL is set
+(``postgresql+psycopg://user:password@127.0.0.1/db``, a database the test may empty); skipped otherwise."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+from fastapi.testclient import TestClient
+
+from conftest import GOLDEN, bearer, make_config, toml_answer
+from lagrade.server.app import create_app
+
+URL = os.environ.get("LAGRADE_TEST_POSTGRES_URL")
+pytestmark = pytest.mark.skipif(not URL, reason="LAGRADE_TEST_POSTGRES_URL is not set")
+
+
+@pytest.fixture
+def pg_url():
+    from sqlalchemy import create_engine
+
+    from lagrade.server.db import metadata
+
+    engine = create_engine(URL)
+    metadata.drop_all(engine)  # a clean database for each test
+    engine.dispose()
+    return URL
+
+
+def test_stored_idempotent_and_kept_across_restarts(tmp_path, pg_url):
+    config = make_config(tmp_path, db=pg_url)
+    app = create_app(config, grade=False)
+    answer = {"answer": toml_answer(GOLDEN / "12.22" / "correct_plain.toml")}
+    with TestClient(app) as client:
+        h = bearer(app, "alice")
+        first = client.post("/api/v1/problems/12.22/check", headers=h, json=answer).json()["submission_id"]
+        assert client.post("/api/v1/problems/12.22/check", headers=h, json=answer).json()["submission_id"] == first
+        secret = app.state.server.secret
+    app = create_app(config, grade=False)  # the same database: the same secret, the same queued attempt
+    assert app.state.server.secret == secret
+    assert app.state.server.db.queued() == [first]
+    app.state.server.db.close()
+
+
+@pytest.mark.slow
+def test_graded_into_the_gradebook(tmp_path, pg_url):
+    app = create_app(make_config(tmp_path, db=pg_url))
+    with TestClient(app) as client:
+        r = client.post("/api/v1/problems/12.22/check", headers=bearer(app, "alice"),
+                        files={"file": ("answer.py", (GOLDEN / "12.22" / "wrong_S3_equals_S1.py").read_bytes())})
+        assert r.status_code == 200, r.text
+        verdicts = {p["part"]: p["verdict"] for p in r.json()["parts"]}
+        assert verdicts["S_t"] == "partial" and verdicts["L"] == "correct"
+        book = app.state.server.db.gradebook()
+        alice = book.student("alice").problems["12.22"]
+        assert alice.submitted and 0 < alice.points < alice.possible
+        assert {p["part"]: p["verdict"] for p in alice.parts} == verdicts
+        page = type(client)(app)
+        from lagrade.server.tokens import INSTRUCTOR, issue
+
+        page.get("/login", params={"token": issue(app.state.server.secret, INSTRUCTOR)})
+        assert "alice" in page.get("/class/").text

@@ -1,0 +1,99 @@
+"""The student page: the problem as `lagrade show`/`template` print it, a field per part, the
+"read as" preview (MathML, parsed as answer.toml is), and verdicts and earlier attempts after a check."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from conftest import GOLDEN, toml_answer
+from lagrade.server.tokens import csrf_token, issue
+
+
+def _browser(app, client, student):
+    browser = type(client)(app)
+    token = issue(app.state.server.secret, student)
+    browser.get("/login", params={"token": token})
+    return browser, {"X-CSRF-Token": csrf_token(app.state.server.secret, token)}
+
+
+def test_problem_page_shows_what_show_and_template_print(quiet_app):
+    from click.testing import CliRunner
+
+    from lagrade.cli import main
+
+    app, client = quiet_app
+    browser, _ = _browser(app, client, "alice")
+    page = browser.get("/p/12.22").text
+    from markupsafe import escape
+
+    for command in ("show", "template"):
+        printed = CliRunner().invoke(main, [command, "12.22"]).output
+        assert str(escape(printed.strip())) in page, command
+    for name in ("f:L", "f:eom", "f:a:m1", "f:a:m4", "f:S_t:S3", "f:a_case:m2"):
+        assert f'name="{name}"' in page, name
+    assert re.search(r'<textarea name="f:eom"', page)
+
+
+def test_preview_reads_text_and_latex_as_answer_toml_does(quiet_app):
+    app, client = quiet_app
+    browser, csrf = _browser(app, client, "alice")
+    url = "/api/v1/problems/12.22/preview"
+    r = browser.post(url, headers=csrf, json={"part": "L", "value": "m1*x_d^2/2"}).json()
+    assert r["error"] is None and r["text"] == "m1*Derivative(x(t), t)**2/2"
+    assert r["mathml"].startswith("<math") and "<mfrac>" in r["mathml"]
+    r = browser.post(url, headers=csrf, json={"part": "L", "value": r"\frac{1}{2} m_1 \dot{x}^2"}).json()
+    assert r["error"] is None and r["text"] == "m1*Derivative(x(t), t)**2/2"
+    r = browser.post(url, headers=csrf, json={"part": "eom", "value": ["x_dd == g", "y_dd == 0"]}).json()
+    assert r["error"] is None and r["text"].startswith("[")
+    r = browser.post(url, headers=csrf, json={"part": "a", "value": {"m1": "g/2"}}).json()
+    assert r["error"] is None
+    bad = browser.post(url, headers=csrf, json={"part": "L", "value": "m1*x_d^^2"}).json()
+    assert bad["error"] and "\n" not in bad["error"] and bad.get("mathml") is None
+    unknown = browser.post(url, headers=csrf, json={"part": "L", "value": "mass*x_d"}).json()
+    assert unknown["error"] and "mass" in unknown["error"]
+    hostile = browser.post(url, headers=csrf, json={"part": "L", "value": "__import__('os').system('true')"}).json()
+    assert hostile["error"]
+    assert browser.post(url, json={"part": "L", "value": "m1"}).status_code == 403  # no CSRF header
+    assert browser.post(url, headers=csrf, json={"part": "nope", "value": "m1"}).json()["error"].startswith("problem 12.22 has no part")
+
+
+@pytest.mark.slow
+def test_submit_shows_verdicts_and_earlier_attempts(graded):
+    app, client, _ = graded
+    browser, csrf = _browser(app, client, "grace")
+    token = csrf["X-CSRF-Token"]
+    values = toml_answer(GOLDEN / "12.22" / "wrong_case_upward.toml")
+    form = {"csrf": token}
+    for part, value in values.items():
+        if isinstance(value, dict):
+            form.update({f"f:{part}:{k}": v for k, v in value.items()})
+        elif isinstance(value, list):
+            form[f"f:{part}"] = "\n".join(value)
+        else:
+            form[f"f:{part}"] = value
+    page = browser.post("/p/12.22/check", data=form).text
+    verdicts = dict(re.findall(r'<tr data-part="([^"]+)">.*?data-verdict>(\w+)<', page, flags=re.DOTALL))
+    assert verdicts["a_case"] == "incorrect" and verdicts["L"] == "correct"
+    assert "<math" in page  # the answer as read, rendered
+    upload = browser.post("/p/12.22/check", data={"csrf": token},
+                          files={"file": ("answer.toml", (GOLDEN / "12.22" / "correct_plain.toml").read_bytes())}).text
+    assert re.search(r'data-score>5</span> / 5', upload)
+    attempts = re.findall(r'href="/p/12\.22\?attempt=(\d+)"', browser.get("/p/12.22").text)
+    assert len(attempts) == 2
+    old = browser.get(f"/p/12.22?attempt={min(map(int, attempts))}").text
+    assert 'data-state="graded"' in old and "incorrect" in old
+    other, _ = _browser(app, client, "heidi")
+    assert other.get(f"/p/12.22?attempt={attempts[0]}").status_code == 404  # not someone else's
+
+
+def test_preview_is_bounded(quiet_app):
+    app, client = quiet_app
+    browser, csrf = _browser(app, client, "alice")
+    url = "/api/v1/problems/12.22/preview"
+    latex = r"\frac{1}{2} m_1 \dot{x}^2" + r" + \frac{1}{2} m_1 \dot{x}^2" * 30
+    r = browser.post(url, headers=csrf, json={"part": "L", "value": latex}).json()
+    assert "characters of LaTeX" in r["error"] and r.get("mathml") is None
+    r = browser.post(url, headers=csrf, json={"part": "L", "value": "x + " * 600}).json()
+    assert "longer than" in r["error"]
