@@ -6,7 +6,40 @@ import os
 import shutil
 import tempfile
 
+import pytest
+
 _CACHE: str | None = None
+
+#: The slow tier (``pytest -m slow``; CI runs both tiers): what grades a class, builds a deployment,
+#: integrates for long, or re-grades a whole corpus end to end. The README's ``pytest`` keeps every
+#: unit test, the jail's tests, the problems, the reference solutions and the hand-written golden
+#: answers, and finishes in under 3 minutes on 2 cores (docs/performance.md). Beside this table,
+#: test files mark their own slow tests (the red team, the server's end-to-end runs).
+SLOW = {
+    "tests/bulk/": "a class graded end to end by grader processes (and Dask)",
+    "tests/deploy/": "autograder builds, run as the platforms run them",
+    "tests/stability/": "long integrations and hard numerical cases",
+    "tests/test_grading_time_bound.py::test_cli_check": "a 2000-branch answer until the bound ends it",
+    "tests/test_grading_time_bound.py::test_library_check": "a 2000-branch answer until the bound ends it",
+    "tests/test_cache.py::test_warm_check": "cold and warm `lagrade check` processes compared",
+    "tests/test_cache.py::test_cache_commands": "`lagrade cache build` of every problem",
+    "tests/test_native.py::test_without_llvmlite": "whole checks again on the numpy path",
+    "tests/test_pytest_plugin.py::test_a_course": "a pytest run of its own",
+    "tests/answers/*/*_blind_*": "the blind corpus (tests/test_blind_corpus.py checks its labels)",
+}
+
+
+def _slow(nodeid: str) -> bool:
+    import fnmatch
+
+    path = nodeid.split("::")[0]
+    return any(nodeid.startswith(key) or fnmatch.fnmatch(path, key) for key in SLOW)
+
+
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        if _slow(item.nodeid):
+            item.add_marker(pytest.mark.slow)
 
 
 def pytest_configure(config):

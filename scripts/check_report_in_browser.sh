@@ -28,9 +28,9 @@ mkdir -p "$work/submissions/ada" "$work/submissions/bob"
 cp reference_solutions/12.43/answer.py "$work/submissions/ada/12.43.py"
 cp tests/answers/12.43/wrong_sign_of_V.py "$work/submissions/bob/12.43.py"
 printf 'name = "demo"\n[[problems]]\nid = "12.43"\n' > "$work/hw.toml"
-python -c "import sys; from lagrade.cli_bulk import grade; grade(sys.argv[1:])" \
+python -c "import sys; from lagrade.cli.bulk import grade; grade(sys.argv[1:])" \
     "$work/submissions" -a "$work/hw.toml" --db "$work/hw.sqlite" --no-summary --no-progress >/dev/null
-python -c "import sys; from lagrade.cli_bulk import report; report(sys.argv[1:])" \
+python -c "import sys; from lagrade.cli.bulk import report; report(sys.argv[1:])" \
     "$work/hw.sqlite" --html "$work/report" >/dev/null
 for page in index students/bob; do
     chromium --headless --no-sandbox --disable-gpu --window-size=1200,1400 \

@@ -6,7 +6,7 @@ import csv
 
 from click.testing import CliRunner
 
-from lagrade.cli_bench import bench
+from lagrade.cli.bench import bench
 
 
 def test_bench_accuracy_writes_table_csv_and_png(tmp_path):
@@ -26,6 +26,6 @@ def test_bench_accuracy_writes_table_csv_and_png(tmp_path):
 
 
 def test_bench_tolerance_range_is_every_decade():
-    from lagrade.cli_bench import _tolerances
+    from lagrade.cli.bench import _tolerances
 
     assert _tolerances("1e-3..1e-12") == tuple(10.0 ** -e for e in range(3, 13))

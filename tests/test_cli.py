@@ -160,10 +160,11 @@ def test_the_lagrade_script_starts_one_blas_thread_unless_told_otherwise(monkeyp
     """Set before any command imports numpy: every process of a check or a class saves the start of
     OpenBLAS's thread pools, which lagrade's few-row matrices never use."""
     from lagrade import cli
+    from lagrade.cli import common
 
     seen = []
     monkeypatch.setattr(cli, "main", lambda: seen.append(os.environ.get("OPENBLAS_NUM_THREADS")))
-    monkeypatch.setattr(cli, "_OWN_PROCESS", False)  # run() sets it; monkeypatch puts it back
+    monkeypatch.setattr(common, "OWN_PROCESS", False)  # run() sets it; monkeypatch puts it back
     monkeypatch.delenv("OPENBLAS_NUM_THREADS", raising=False)
     cli.run()
     monkeypatch.setenv("OPENBLAS_NUM_THREADS", "3")

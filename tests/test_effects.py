@@ -106,7 +106,7 @@ def test_show_lists_the_declared_effects():
 
 
 def test_bench_effects_prints_machinery_and_costs():
-    from lagrade.cli_bench import bench
+    from lagrade.cli.bench import bench
 
     res = CliRunner().invoke(bench, ["effects", "12.4", "--repeat", "1"])
     assert res.exit_code == 0, res.output

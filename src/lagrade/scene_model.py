@@ -174,7 +174,6 @@ class SceneModel:
     def events(self, y0: np.ndarray, params: np.ndarray) -> list[BatchedEvent]:
         """Contact-loss and switching events of the declared effects (none for a smooth, bilateral scene)."""
         out: list[BatchedEvent] = []
-        K = y0.shape[1]
         n = self.n
         if self.machinery.contact_events:
             idx = [self.multiplier_names.index(m) for m in self.machinery.contact_events]

@@ -91,8 +91,8 @@ def _lagrade_src() -> Path:
 def _check_bound_args() -> list[str]:
     """The grading bound the class run gets (LIMITS), for a check too where lagrade has the option
     (its default, 120 s of CPU, is longer than CHECK_BOUND)."""
-    cli = _lagrade_src() / "lagrade" / "cli.py"
-    has = cli.is_file() and "--grading-seconds" in cli.read_text()
+    package = _lagrade_src() / "lagrade"
+    has = any(f.is_file() and "--grading-seconds" in f.read_text() for f in (package / "cli.py", package / "cli" / "check.py"))
     return ["--grading-seconds", str(LIMITS["grading_seconds"])] if has else []
 
 

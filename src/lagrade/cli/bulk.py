@@ -1,4 +1,4 @@
-"""Instructor commands: ``lagrade grade``, ``export``, ``report`` and ``gradescope``.
+"""Instructor commands: ``grade``, ``export``, ``report``, ``override``, ``import``, ``gradescope``, ``prairielearn``.
 
 Module-level click commands, registered on the main group by ``lagrade.cli``. Heavy imports are
 deferred so that ``lagrade --help`` stays fast.
@@ -6,6 +6,7 @@ deferred so that ``lagrade --help`` stays fast.
 
 from __future__ import annotations
 
+import csv
 import shutil
 import sys
 import tempfile
@@ -13,9 +14,7 @@ from pathlib import Path
 
 import click
 
-problems_option = click.option("--problems", "problems_dir", multiple=True, type=click.Path(path_type=Path),
-                               help="Extra folder of problem files (also LAGRADE_PROBLEMS).")
-
+from lagrade.cli.common import problems_option
 
 #: a gradebook path as click passes it on: what it is, and whether it can be read, is the Store's to
 #: say (one line naming the file and what to do, exit 2), not a click usage error
@@ -49,7 +48,11 @@ def _gradebook_error(db: Path, exc: Exception, hint: str) -> GradebookError:
 
 
 def _assignment(path: Path, problems_dir: tuple[Path, ...]):
-    from lagrade.bulk.assignment import AssignmentError, check_against_problems, load_assignment
+    from lagrade.bulk.assignment import (
+        AssignmentError,
+        check_against_problems,
+        load_assignment,
+    )
 
     try:
         a = load_assignment(path)
@@ -116,10 +119,9 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
     if len(report.skipped) > 20:
         out.print(f"  ... and {len(report.skipped) - 20} more (lagrade export {db} --format skipped)")
     if summary:
-        from lagrade.bulk.gradebook import load_gradebook
         from lagrade.bulk.summary import render_summary
 
-        render_summary(load_gradebook(db), out)
+        render_summary(_book(db), out)
 
 
 def _require_jail(unsafe: bool, err) -> None:
@@ -156,7 +158,13 @@ class _ProgressBar:
     def __enter__(self) -> "_ProgressBar":
         import time
 
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+        from rich.progress import (
+            BarColumn,
+            MofNCompleteColumn,
+            Progress,
+            TextColumn,
+            TimeRemainingColumn,
+        )
 
         self.t0 = time.monotonic()
         if self.show:
@@ -192,12 +200,17 @@ def _book(db: Path):
     import sqlite3
 
     from lagrade.bulk.gradebook import load_gradebook
+    from lagrade.bulk.overrides import apply_overrides
     from lagrade.bulk.store import StoreError
 
     try:
-        return load_gradebook(db)
+        book = load_gradebook(db)
+        unused = apply_overrides(book, db)
     except (StoreError, sqlite3.DatabaseError, ValueError) as exc:  # ValueError: its JSON, AssignmentError
         raise _gradebook_error(db, exc, "give the database that 'lagrade grade' wrote") from None
+    for line in unused:
+        click.echo(f"lagrade: override not applied: {line}", err=True)
+    return book
 
 
 @click.command("export")
@@ -209,7 +222,10 @@ def _book(db: Path):
 @click.option("--student", help="For --format gradescope: whose results.json (needed with several students).")
 @click.option("--roster", type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="For --format canvas: a Canvas gradebook export, to use its student ids.")
-def export(db: Path, fmt: str, output: Path | None, student: str | None, roster: Path | None) -> None:
+@click.option("--missing", type=click.Choice(["zero", "blank"]), default="zero", show_default=True,
+              help="For --format canvas with --roster: a roster student without a folder gets 0, or an empty "
+                   "cell (Canvas keeps their grade).")
+def export(db: Path, fmt: str, output: Path | None, student: str | None, roster: Path | None, missing: str) -> None:
     """Export the grades in DB: Canvas import CSV, plain CSV, Gradescope results.json, HTML report."""
     from lagrade.bulk import exports
 
@@ -222,7 +238,13 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
         click.echo(str(write_report(book, output)))
         return
     if fmt == "canvas":
-        text = exports.canvas_csv(book, exports.read_roster(roster) if roster else None)
+        rows = _roster(roster) if roster else None
+        text = exports.canvas_csv(book, rows, missing=0.0 if missing == "zero" else None)
+        if rows is not None:
+            lost = exports.not_on_roster(book, rows)
+            if lost:
+                click.echo(f"lagrade: {len(lost)} student folders are on no row of {roster} (or on a row another "
+                           f"folder took) and are not in the export: {', '.join(lost)}", err=True)
     elif fmt == "csv":
         text = exports.plain_csv(book)
     elif fmt == "skipped":
@@ -236,6 +258,84 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
         click.echo(text, nl=False)
     else:
         output.write_text(text, encoding="utf-8")
+
+
+def _roster(path: Path) -> dict[str, dict[str, str]]:
+    from lagrade.bulk import exports
+
+    try:
+        return exports.read_roster(path)
+    except (OSError, UnicodeDecodeError, csv.Error) as exc:
+        raise click.UsageError(f"{path}: not a readable Canvas gradebook export ({exc})") from None
+
+
+@click.command("override")
+@click.argument("db", type=GRADEBOOK_PATH)
+@click.argument("student")
+@click.argument("problem")
+@click.argument("part")
+@click.argument("score", required=False, type=float)
+@click.option("--reason", help="Why (shown to the student with the score). Required to set a score.")
+@click.option("--remove", is_flag=True, help="Remove the override of this part: the engine's score counts again.")
+def override(db: Path, student: str, problem: str, part: str, score: float | None, reason: str | None,
+             remove: bool) -> None:
+    """Set STUDENT's SCORE for PART of PROBLEM in DB, over the engine's; kept across regrades.
+
+    SCORE is on the part's own scale (the "score" column of the report, e.g. 1 of 1); the
+    assignment's weights turn it into points as they do the engine's."""
+    import sqlite3
+
+    from lagrade.bulk.overrides import part_of
+    from lagrade.bulk.store import Store, StoreError
+
+    book = _book(db)
+    try:
+        p = part_of(book, student, problem, part)
+    except ValueError as exc:
+        raise click.UsageError(str(exc)) from None
+    try:
+        with Store(db) as store:
+            if remove:
+                done = store.remove_override(student, problem, part)
+                click.echo(f"{student} {problem} {part}: " + ("override removed" if done else "had no override"))
+                return
+            if score is None or not reason or not reason.strip():
+                raise click.UsageError("give SCORE and --reason \"...\" (or --remove)")
+            engine_max = p["max_score"]
+            if not 0 <= score <= engine_max:
+                raise click.UsageError(f"SCORE must be between 0 and {engine_max:g} (the part's maximum)")
+            store.set_override(student=student, problem=problem, part=part, score=score, max_score=engine_max,
+                               reason=reason.strip())
+    except (StoreError, sqlite3.DatabaseError) as exc:
+        raise _gradebook_error(db, exc, "give the database that 'lagrade grade' wrote") from None
+    after = _book(db).student(student)
+    click.echo(f"{student} {problem} {part}: {score:g} / {engine_max:g} ({reason.strip()}); "
+               f"{problem} now {after.problems[problem].points:g}, total {after.points:g} / {after.possible:g}")
+
+
+@click.command("import")
+@click.argument("download", type=click.Path(exists=True, file_okay=False, path_type=Path))
+@click.option("--assignment", "-a", "assignment_path", required=True,
+              type=click.Path(exists=True, dir_okay=False, path_type=Path), help="The assignment TOML file.")
+@click.option("--output", "-o", type=click.Path(file_okay=False, path_type=Path), required=True,
+              help="The submissions folder to write (<student>/<problem-id>.py).")
+@click.option("--roster", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="A Canvas gradebook export: folders named after its SIS Login ID.")
+@problems_option
+def import_(download: Path, assignment_path: Path, output: Path, roster: Path | None,
+            problems_dir: tuple[Path, ...]) -> None:
+    """Turn an unzipped LMS download (Canvas's submissions, Gradescope's export) into a submissions folder.
+
+    Files named nearly right (12_22.py, 12.22 (1).py, 12.22.PY, hw7-12.22.py) are taken and listed;
+    files that match no problem are listed too."""
+    from lagrade.bulk.intake import import_downloads
+
+    a = _assignment(assignment_path, problems_dir)
+    report = import_downloads(download, a.ids, output, _roster(roster) if roster else None)
+    for note in report.notes:
+        click.echo(f"  {note}")
+    click.echo(f"{report.kind or 'download'}: {len(report.copied)} files of {len(report.students)} students -> "
+               f"{output}; {len(report.notes)} notes above")
 
 
 @click.command("report")
@@ -257,22 +357,78 @@ def report(db: Path, html_dir: Path | None) -> None:
         click.echo(f"report: {index}")
 
 
-@click.command("gradescope")
-@click.option("--submission", type=click.Path(file_okay=False, path_type=Path), default="/autograder/submission",
-              show_default=True, help="The student's files (<problem-id>.py or .toml, at any depth).")
-@click.option("--assignment", "-a", "assignment_path", type=click.Path(dir_okay=False, path_type=Path),
-              default="/autograder/source/assignment.toml", show_default=True)
-@click.option("--results", type=click.Path(dir_okay=False, path_type=Path),
-              default="/autograder/results/results.json", show_default=True)
-@click.option("--workers", "-j", type=click.IntRange(min=1), help="Grader processes (default: all cores).")
-@problems_option
-def gradescope(submission: Path, assignment_path: Path, results: Path, workers: int | None,
+_RUN_OPTIONS = [
+    click.option("--submission", type=click.Path(file_okay=False, path_type=Path), default="/autograder/submission",
+                 show_default=True, help="The student's files (<problem-id>.py or .toml, at any depth)."),
+    click.option("--assignment", "-a", "assignment_path", type=click.Path(dir_okay=False, path_type=Path),
+                 default="/autograder/source/assignment.toml", show_default=True),
+    click.option("--results", type=click.Path(dir_okay=False, path_type=Path),
+                 default="/autograder/results/results.json", show_default=True),
+    click.option("--workers", "-j", type=click.IntRange(min=1), help="Grader processes (default: all cores)."),
+    problems_option,
+]
+
+
+def _run_options(f):
+    for option in reversed(_RUN_OPTIONS):
+        f = option(f)
+    return f
+
+
+@click.group("gradescope", invoke_without_command=True)
+@_run_options
+@click.pass_context
+def gradescope(ctx: click.Context, submission: Path, assignment_path: Path, results: Path, workers: int | None,
                problems_dir: tuple[Path, ...]) -> None:
-    """Grade one Gradescope submission and write Gradescope's results.json (for run_autograder)."""
+    """Gradescope: `build` the autograder zip; `run` (or no subcommand) grades one submission.
+
+    Without a subcommand, grades the submission into Gradescope's results.json, as `run` does (what
+    autograders made by earlier lagrades call)."""
+    if ctx.invoked_subcommand is None:
+        _gradescope_run(submission, assignment_path, results, workers, problems_dir)
+
+
+@gradescope.command("run")
+@_run_options
+def gradescope_run(submission: Path, assignment_path: Path, results: Path, workers: int | None,
+                   problems_dir: tuple[Path, ...]) -> None:
+    """Grade one Gradescope submission and write Gradescope's results.json (run_autograder calls this)."""
+    _gradescope_run(submission, assignment_path, results, workers, problems_dir)
+
+
+@gradescope.command("build")
+@click.argument("assignment_path", metavar="ASSIGNMENT", type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option("--output", "-o", type=click.Path(dir_okay=False, path_type=Path), default="autograder.zip",
+              show_default=True, help="The zip to upload to Gradescope.")
+@click.option("--wheel", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="Ship this lagrade wheel instead of building one from the checkout.")
+@problems_option
+def gradescope_build(assignment_path: Path, output: Path, wheel: Path | None, problems_dir: tuple[Path, ...]) -> None:
+    """Write the autograder zip for ASSIGNMENT: setup.sh, run_autograder, a lagrade wheel, the assignment."""
+    from lagrade.bulk.assignment import AssignmentError
+    from lagrade.deploy.gradescope import build_autograder
+    from lagrade.deploy.wheel import DeployError
+
+    try:
+        names = build_autograder(assignment_path, output, problems_dir, wheel)
+    except AssignmentError as exc:
+        raise click.UsageError(str(exc)) from None
+    except DeployError as exc:
+        raise click.ClickException(str(exc)) from None
+    click.echo(f"{output}: {', '.join(names)}")
+
+
+def _gradescope_run(submission: Path, assignment_path: Path, results: Path, workers: int | None,
+                    problems_dir: tuple[Path, ...]) -> None:
+    import json
+    import time
+
     from lagrade.bulk.exports import gradescope_results
     from lagrade.bulk.gradebook import load_gradebook
+    from lagrade.bulk.intake import find_answers
     from lagrade.bulk.runner import grade_folder
 
+    t0 = time.monotonic()
     a = _assignment(assignment_path, problems_dir)
     work = Path(tempfile.mkdtemp(prefix="lagrade-gradescope-"))
     try:
@@ -280,25 +436,62 @@ def gradescope(submission: Path, assignment_path: Path, results: Path, workers: 
         folder.mkdir(parents=True)
         notes = []
         if submission.is_dir():
-            for pid in a.ids:
-                found = sorted((p for ext in (".py", ".toml") for p in submission.rglob(f"{pid}{ext}")
-                                if p.is_file() and not p.is_symlink()), key=lambda p: (len(p.parts), str(p)))
-                if found:
-                    shutil.copyfile(found[0], folder / found[0].name)
-                    if len(found) > 1:
-                        notes.append(f"several files for {pid}; graded {found[0].relative_to(submission)}")
+            found = find_answers(submission, a.ids)
+            for pid, path in found.chosen.items():
+                shutil.copyfile(path, folder / f"{pid}{path.suffix.lower()}")
+            notes += found.notes
         else:
             notes.append(f"no submission folder {submission}")
         db = work / "grades.sqlite"
         grade_folder(work / "class", a, db, workers=workers, problems_dirs=problems_dir)
         book = load_gradebook(db)
-        out = gradescope_results(book, book.student("submission"))
+        out = gradescope_results(book, book.student("submission"), execution_time=time.monotonic() - t0)
         if notes:
-            out["output"] += "\n" + "\n".join(notes)
-        results.parent.mkdir(parents=True, exist_ok=True)
-        import json
+            sep = "<br>" if out["output_format"] == "html" else "\n\n" if out["output_format"] == "md" else "\n"
+            from html import escape
 
+            said = [escape(n) if out["output_format"] == "html" else n for n in notes]
+            out["output"] += sep + sep.join(said)
+        results.parent.mkdir(parents=True, exist_ok=True)
         results.write_text(json.dumps(out, indent=1), encoding="utf-8")
         click.echo(f"{out['score']:g} / {book.possible:g} -> {results}")
     finally:
         shutil.rmtree(work, ignore_errors=True)
+
+
+@click.group("prairielearn")
+def prairielearn() -> None:
+    """PrairieLearn: `build` the external grader's Docker folder and an example question; `grade` a job."""
+
+
+@prairielearn.command("grade")
+@click.option("--root", type=click.Path(file_okay=False, path_type=Path), default="/grade", show_default=True,
+              help="The job: data/data.json and student/ in, results/results.json out.")
+def prairielearn_grade(root: Path) -> None:
+    """Grade one PrairieLearn job (the container's entry point runs this)."""
+    from lagrade.deploy.prairielearn import write_results
+
+    results = write_results(root)
+    click.echo(f"gradable {results['gradable']}, score {results.get('score', 0):g} -> {root / 'results' / 'results.json'}")
+
+
+@prairielearn.command("build")
+@click.option("--output", "-o", type=click.Path(file_okay=False, path_type=Path), default="prairielearn",
+              show_default=True, help="The folder to write (docker build it; copy questions/ into the course).")
+@click.option("--problem", default="12.43", show_default=True, help="The problem of the example question.")
+@click.option("--wheel", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="Ship this lagrade wheel instead of building one from the checkout.")
+@problems_option
+def prairielearn_build(output: Path, problem: str, wheel: Path | None, problems_dir: tuple[Path, ...]) -> None:
+    """Write the grader's Dockerfile, the lagrade wheel, the entry script and an example question."""
+    from lagrade.deploy.prairielearn import build_grader
+    from lagrade.deploy.wheel import DeployError
+    from lagrade.spec import SpecError
+
+    try:
+        names = build_grader(output, problem, problems_dir, wheel)
+    except SpecError as exc:
+        raise click.UsageError(str(exc)) from None
+    except DeployError as exc:
+        raise click.ClickException(str(exc)) from None
+    click.echo(f"{output}: {', '.join(names)}")

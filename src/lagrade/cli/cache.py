@@ -16,7 +16,7 @@ from pathlib import Path
 
 import click
 
-from lagrade.cli import problems_option
+from lagrade.cli.common import problems_option
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -73,7 +73,7 @@ def _compile_bytecode() -> None:
     import compileall
 
     try:
-        compileall.compile_dir(Path(__file__).parent, quiet=2)
+        compileall.compile_dir(Path(__file__).resolve().parents[1], quiet=2)  # the lagrade package
     except OSError:
         pass
 

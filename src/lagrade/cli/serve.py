@@ -12,8 +12,7 @@ from pathlib import Path
 
 import click
 
-problems_option = click.option("--problems", "problems_dir", multiple=True, type=click.Path(path_type=Path),
-                               help="Extra folder of problem files (also LAGRADE_PROBLEMS).")
+from lagrade.cli.common import problems_option
 
 
 def _need_server_extra() -> None:
@@ -57,7 +56,7 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     import uvicorn
     from rich.console import Console
 
-    from lagrade.cli_bulk import _require_jail
+    from lagrade.cli.bulk import _require_jail
     from lagrade.server.app import create_app
     from lagrade.server.config import ServerConfig
     from lagrade.server.tokens import INSTRUCTOR, issue
