@@ -7,10 +7,10 @@ import io
 import json
 import sqlite3
 
-from click.testing import CliRunner
-from conftest import assert_expected, stored
-
 import classgen
+from classcheck import assert_expected, stored
+from click.testing import CliRunner
+
 from lagrade.cli.bulk import export, grade, report
 
 

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-import pytest
-from click.testing import CliRunner
-from conftest import assert_expected, stored
-
 import classgen
+import pytest
+from classcheck import assert_expected, stored
+from click.testing import CliRunner
+
 from lagrade.bulk.assignment import load_assignment
 from lagrade.bulk.runner import grade_folder
 from lagrade.cli.bulk import grade

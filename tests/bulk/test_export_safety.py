@@ -13,10 +13,10 @@ import io
 import json
 import shutil
 
+import classgen
 import pytest
 from click.testing import CliRunner
 
-import classgen
 from lagrade.bulk.exports import FORMULA_STARTS, spreadsheet_safe
 from lagrade.cli.bulk import export, grade, report
 

@@ -8,10 +8,10 @@ import shutil
 import sqlite3
 import subprocess
 
+import classgen
 import pytest
 from click.testing import CliRunner
 
-import classgen
 from lagrade.bulk.assignment import AssignmentError, parse_assignment, points
 from lagrade.bulk.html_report import slug
 from lagrade.cli.bulk import export, grade, gradescope, report

@@ -11,10 +11,10 @@ import subprocess
 import sys
 from pathlib import Path
 
+import classgen
 import pytest
 from click.testing import CliRunner
 
-import classgen
 from lagrade.bulk.store import Key, Store
 from lagrade.cli.bulk import export, grade, report
 

@@ -9,8 +9,15 @@ import sys
 import time
 from pathlib import Path
 
-from lagrade.bulk.worker import (_ORPHAN, SYMPY_CACHE_ENTRIES, GraderProcess, _pid_namespace, grader_environment,
-                                 remove_orphaned_folders, stop_all)
+from lagrade.bulk.worker import (
+    _ORPHAN,
+    SYMPY_CACHE_ENTRIES,
+    GraderProcess,
+    _pid_namespace,
+    grader_environment,
+    remove_orphaned_folders,
+    stop_all,
+)
 from lagrade.library import problem_path, reference_dir
 
 

@@ -6,9 +6,9 @@ import hashlib
 import os
 from pathlib import Path
 
-from conftest import stored
-
 import classgen
+from classcheck import stored
+
 from lagrade.bulk.assignment import parse_assignment
 from lagrade.bulk.runner import grade_folder
 

@@ -9,10 +9,10 @@ import shutil
 import sqlite3
 from pathlib import Path
 
+import classgen
 import pytest
 from click.testing import CliRunner
 
-import classgen
 from lagrade.bulk.gradebook import load_gradebook
 from lagrade.bulk.intake import import_downloads, match_name
 from lagrade.bulk.layout import scan

@@ -11,9 +11,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from conftest import assert_expected
-
 import classgen
+from classcheck import assert_expected
+
 from lagrade.bulk.assignment import load_assignment
 from lagrade.bulk.runner import grade_folder
 from lagrade.bulk.worker import _ORPHAN

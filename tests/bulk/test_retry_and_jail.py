@@ -10,9 +10,9 @@ import signal
 import sqlite3
 from pathlib import Path
 
+import classgen
 import pytest
 
-import classgen
 import lagrade.bulk.runner as runner
 from lagrade.bulk import exports
 from lagrade.bulk.assignment import load_assignment

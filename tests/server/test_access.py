@@ -7,8 +7,8 @@ from __future__ import annotations
 import re
 
 from fastapi.testclient import TestClient
+from serverkit import bearer, make_config
 
-from conftest import bearer, make_config
 from lagrade.server.app import create_app
 from lagrade.server.tokens import csrf_token, issue, student_of
 

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from serverkit import GOLDEN, REPO, bearer, expectations, golden, toml_answer
 
-from conftest import GOLDEN, REPO, bearer, expectations, golden, toml_answer
 from lagrade.cli import main
 
 pytestmark = pytest.mark.slow

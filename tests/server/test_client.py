@@ -8,8 +8,8 @@ import socket
 
 import pytest
 from click.testing import CliRunner
+from serverkit import GOLDEN, REPO
 
-from conftest import GOLDEN, REPO
 from lagrade.cli import main
 from lagrade.server.tokens import issue
 

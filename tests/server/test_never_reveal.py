@@ -17,8 +17,8 @@ from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
+from serverkit import GOLDEN, PROBLEMS, REPO, bearer, golden, toml_answer
 
-from conftest import GOLDEN, PROBLEMS, REPO, bearer, golden, toml_answer
 from lagrade.answers.load import load_answer
 from lagrade.library import load_problem
 from lagrade.server.tokens import csrf_token, issue

@@ -7,8 +7,8 @@ import os
 
 import pytest
 from fastapi.testclient import TestClient
+from serverkit import GOLDEN, bearer, make_config, toml_answer
 
-from conftest import GOLDEN, bearer, make_config, toml_answer
 from lagrade.server.app import create_app
 
 URL = os.environ.get("LAGRADE_TEST_POSTGRES_URL")

@@ -15,8 +15,8 @@ import time
 import httpx
 import pytest
 from click.testing import CliRunner
+from serverkit import ASSIGNMENT
 
-from conftest import ASSIGNMENT
 from lagrade.cli import main
 from lagrade.server.db import Database
 from lagrade.server.tokens import INSTRUCTOR, student_of

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 from fastapi.testclient import TestClient
+from serverkit import GOLDEN, bearer, expectations, make_config
 
-from conftest import GOLDEN, bearer, expectations, make_config
 from lagrade.server.app import create_app
 
 pytestmark = pytest.mark.slow

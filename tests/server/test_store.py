@@ -10,8 +10,8 @@ import pytest
 from fastapi.testclient import TestClient
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from serverkit import GOLDEN, bearer, make_config
 
-from conftest import GOLDEN, bearer, make_config
 from lagrade.bulk.store import Store
 from lagrade.server.answers import to_toml
 from lagrade.server.app import create_app

@@ -6,8 +6,8 @@ from __future__ import annotations
 import re
 
 import pytest
+from serverkit import GOLDEN, toml_answer
 
-from conftest import GOLDEN, toml_answer
 from lagrade.server.tokens import csrf_token, issue
 
 

@@ -24,7 +24,14 @@ from typing import Any
 from lagrade.bulk.assignment import Assignment, check_against_problems
 from lagrade.bulk.layout import Layout, Submission, scan
 from lagrade.bulk.store import Key, Store
-from lagrade.bulk.worker import GraderProcess, WorkerDied, failed_result, hard_deadline, stop_all
+from lagrade.bulk.worker import (
+    GraderProcess,
+    WorkerDied,
+    failed_result,
+    hard_deadline,
+    look_after,
+    stop_all,
+)
 
 ResultCallback = Callable[[dict[str, Any]], None]
 
@@ -157,39 +164,8 @@ def run_local(jobs: Iterable[dict[str, Any]], sources: dict[str, str], workers: 
                     g.submit(queue.popleft())
             busy = [g for g in graders if g.job is not None]
             ready = wait([g.recv_conn for g in busy], timeout=1.0)
-            now = time.monotonic()
-            for i, g in enumerate(graders):
-                if g.job is None:
-                    continue
-                job = g.job
-                if g.recv_conn in ready:
-                    try:
-                        msg = g.recv_conn.recv()
-                    except (EOFError, OSError):
-                        msg = None
-                    if msg is None:
-                        g.kill()
-                        graders[i] = GraderProcess(sources)
-                        done(failed_result(job, job["parts"], "grader-crash",
-                                           "the grader process died while grading this file (it may have used "
-                                           "too much memory); please report it", now - g.started))
-                    elif "ready" in msg:
-                        if not msg["ready"]:
-                            raise WorkerDied(f"a grader process could not start: {msg.get('error')}")
-                        g.ready, g.started = True, now
-                    else:
-                        g.job = None
-                        if queue:  # the grader starts its next file while this result is written
-                            g.submit(queue.popleft())
-                        done(msg)
-                elif g.ready and now - g.started > hard_deadline(job["limits"]):
-                    g.kill()
-                    graders[i] = GraderProcess(sources)
-                    done(failed_result(job, job["parts"], "grader-timeout",
-                                       f"grading this file did not finish in {hard_deadline(job['limits']):g} s",
-                                       now - g.started))
-                elif not g.ready and now - g.started > 600:
-                    raise WorkerDied("a grader process did not warm up in 10 minutes")
+            look_after(graders, sources, ready, time.monotonic(), lambda job, result: done(result),
+                       lambda: queue.popleft() if queue else None)
     finally:
         for g in graders:
             if g.job is not None:

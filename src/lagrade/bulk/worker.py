@@ -20,6 +20,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable
 from multiprocessing.connection import Connection, wait
 from pathlib import Path
 from typing import Any
@@ -402,6 +403,48 @@ def stop_all(graders: list[GraderProcess]) -> None:
 def hard_deadline(limits: dict[str, float]) -> float:
     """Seconds after which the coordinator kills a grader process stuck on one job."""
     return limits["wall_seconds"] + 2 * limits["grading_seconds"] + 30
+
+
+def look_after(graders: list[GraderProcess], sources: dict[str, str], ready: list, now: float,
+               done: Callable[[dict[str, Any], dict[str, Any]], None],
+               next_job: Callable[[], dict[str, Any] | None] = lambda: None) -> None:
+    """One round over the busy graders, for a class run and the server's queue alike: a result goes
+    to ``done(job, result)`` (the grader first takes ``next_job()``, so it works while the result is
+    written); a grader that died or overran its hard deadline is replaced, and its file gets a
+    verdict that says so. ``ready``: the connections `multiprocessing.connection.wait` returned."""
+    for i, g in enumerate(graders):
+        job = g.job
+        if job is None:
+            continue
+        if g.recv_conn in ready:
+            try:
+                msg = g.recv_conn.recv()
+            except (EOFError, OSError):
+                msg = None
+            if msg is None:
+                g.kill()
+                graders[i] = GraderProcess(sources)
+                done(job, failed_result(job, job["parts"], "grader-crash",
+                                        "the grader process died while grading this file (it may have used "
+                                        "too much memory); please report it", now - g.started))
+            elif "ready" in msg:
+                if not msg["ready"]:
+                    raise WorkerDied(f"a grader process could not start: {msg.get('error')}")
+                g.ready, g.started = True, now
+            else:
+                g.job = None
+                following = next_job()
+                if following is not None:
+                    g.submit(following)
+                done(job, msg)
+        elif g.ready and now - g.started > hard_deadline(job["limits"]):
+            g.kill()
+            graders[i] = GraderProcess(sources)
+            done(job, failed_result(job, job["parts"], "grader-timeout",
+                                    f"grading this file did not finish in {hard_deadline(job['limits']):g} s",
+                                    now - g.started))
+        elif not g.ready and now - g.started > 600:
+            raise WorkerDied("a grader process did not warm up in 10 minutes")
 
 
 class _Duplex:

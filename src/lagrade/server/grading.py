@@ -26,13 +26,7 @@ from typing import Any
 from lagrade.bulk.assignment import Assignment
 from lagrade.bulk.layout import Submission
 from lagrade.bulk.runner import Plan, plan, problem_totals
-from lagrade.bulk.worker import (
-    GraderProcess,
-    WorkerDied,
-    failed_result,
-    hard_deadline,
-    stop_all,
-)
+from lagrade.bulk.worker import GraderProcess, failed_result, look_after, stop_all
 from lagrade.result import CheckResult, PartResult
 from lagrade.server.db import Attempt, Database
 
@@ -206,36 +200,7 @@ class GradingQueue:
                 ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=1.0)
                 if self._wake_r in ready:
                     os.read(self._wake_r, 4096)
-                now = time.monotonic()
-                for i, g in enumerate(graders):
-                    job = g.job
-                    if job is None:
-                        continue
-                    if g.recv_conn in ready:
-                        try:
-                            msg = g.recv_conn.recv()
-                        except (EOFError, OSError):
-                            msg = None
-                        if msg is None:
-                            g.kill()
-                            graders[i] = GraderProcess(sources)
-                            self._done(job, failed_result(job, job["parts"], "grader-crash",
-                                                          "the grader process died while grading this file (it may "
-                                                          "have used too much memory); please report it",
-                                                          now - g.started))
-                        elif "ready" in msg:
-                            if not msg["ready"]:
-                                raise WorkerDied(f"a grader process could not start: {msg.get('error')}")
-                            g.ready, g.started = True, now
-                        else:
-                            g.job = None
-                            self._done(job, msg)
-                    elif g.ready and now - g.started > hard_deadline(job["limits"]):
-                        g.kill()
-                        graders[i] = GraderProcess(sources)
-                        self._done(job, failed_result(job, job["parts"], "grader-timeout",
-                                                      f"grading this file did not finish in "
-                                                      f"{hard_deadline(job['limits']):g} s", now - g.started))
+                look_after(graders, sources, ready, time.monotonic(), self._done)
         except Exception:
             log.exception("the grading thread stopped; queued attempts are graded when the server starts again")
         finally:

@@ -1,0 +1,61 @@
+"""Helpers of the server tests: the small assignment, configs, tokens and golden answers (a module
+of its own: tests/bulk has a conftest too, and one name would shadow the other)."""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("fastapi")
+pytest.importorskip("sqlalchemy")
+pytest.importorskip("httpx")
+
+
+from lagrade.server.config import ServerConfig
+from lagrade.server.tokens import issue
+
+REPO = Path(__file__).resolve().parents[2]
+GOLDEN = REPO / "tests" / "answers"
+PROBLEMS = ("12.22", "12.14")
+ASSIGNMENT = 'name = "hw-serve"\ntitle = "Serve test"\n[limits]\ncpu_seconds = 10\nwall_seconds = 20\n' + \
+    "".join(f'[[problems]]\nid = "{pid}"\n' for pid in PROBLEMS)
+
+
+#: golden answers (tests/answers) used here, by name: that folder grows (other suites add files to it)
+GOLDEN_NAMES = {
+    "12.22": ["correct_plain.toml", "correct_latex.toml", "correct_solved_accelerations.py", "wrong_S3_equals_S1.py",
+              "wrong_sign_of_V.py", "wrong_case_upward.toml", "wrong_ignores_pulley_motion.py"],
+    "12.14": ["correct_plain.toml", "correct_latex.toml", "correct_cartesian_and_solve.py", "wrong_missing_cross_term.py",
+              "wrong_uncoupled_frequencies.toml", "wrong_V_upper_mass_only.py", "wrong_centrifugal_sign_exact.py"],
+}
+
+
+def golden(pid: str) -> list[Path]:
+    return [GOLDEN / pid / name for name in GOLDEN_NAMES[pid]]
+
+
+def make_config(tmp: Path, **kw) -> ServerConfig:
+    path = tmp / "hw.toml"
+    if not path.exists():
+        path.write_text(ASSIGNMENT, encoding="utf-8")
+    kw.setdefault("db", str(tmp / "serve.sqlite"))
+    kw.setdefault("workers", 1)
+    return ServerConfig(assignment=path, **kw)
+
+
+def bearer(app, student: str) -> dict[str, str]:
+    return {"Authorization": f"Bearer {issue(app.state.server.secret, student)}"}
+
+
+def expectations(path: Path) -> dict[str, str]:
+    """The ``# expect: L=correct, eom=partial`` line of a golden answer file."""
+    first = path.read_text(encoding="utf-8").splitlines()[0]
+    m = re.match(r"#\s*expect:\s*(.*)", first)
+    return dict(item.strip().split("=") for item in m.group(1).split(",")) if m else {}
+
+
+def toml_answer(path: Path) -> dict:
+    return tomllib.loads(path.read_text(encoding="utf-8"))
