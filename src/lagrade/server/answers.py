@@ -39,31 +39,21 @@ class AnswerTextError(ValueError):
     pass
 
 
-def _string(s: str) -> str:
-    """A TOML basic string: JSON's escapes are TOML's, but DEL and surrogates must not appear raw."""
-    try:
-        s.encode("utf-8")
-    except UnicodeEncodeError:
-        raise AnswerTextError("a value holds an unpaired surrogate; send UTF-8 text") from None
-    return json.dumps(s, ensure_ascii=False).replace("\x7f", "\\u007f")
-
-
-def _value(v) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, str):
-        return _string(v)
-    if isinstance(v, list):
-        return "[" + ", ".join(_string(x) for x in v) + "]"
-    return "{" + ", ".join(f"{_string(k)} = {_value(x)}" for k, x in sorted(v.items())) + "}"
+def _sorted(v):
+    return {k: _sorted(x) for k, x in sorted(v.items())} if isinstance(v, dict) else v
 
 
 def to_toml(answer: dict) -> bytes:
-    """``answer.toml`` text holding exactly these values (checked by reading it back)."""
-    text = "".join(f"{_string(k)} = {_value(v)}\n" for k, v in sorted(answer.items()))
-    if tomllib.loads(text) != answer:  # pragma: no cover  (a guard: the writer above is small)
+    """``answer.toml`` text holding exactly these values, written by tomli-w with sorted keys (the
+    same content, the same bytes), and checked by reading it back."""
+    import tomli_w
+
+    try:
+        json.dumps(answer, ensure_ascii=False).encode("utf-8")
+    except UnicodeEncodeError:
+        raise AnswerTextError("a value holds an unpaired surrogate; send UTF-8 text") from None
+    text = tomli_w.dumps(_sorted(answer))
+    if tomllib.loads(text) != answer:  # pragma: no cover  (a guard: what is graded is what was sent)
         raise AnswerTextError("the answer could not be written as answer.toml")
     return text.encode("utf-8")
 
