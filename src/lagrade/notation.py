@@ -128,6 +128,10 @@ def _check_bracket_depth(text: str, what: str) -> None:
 
 
 
+#: yes/no answers written in words (answer.toml's own true/false, and Python's, are booleans already)
+YES_NO = {"yes": True, "no": False, "true": True, "false": False}
+
+
 # --------------------------------------------------------------------------- the reader
 
 

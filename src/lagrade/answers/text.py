@@ -21,7 +21,7 @@ from typing import Any
 import sympy as sp
 
 from lagrade.answers.screen import AnswerProblem
-from lagrade.notation import TextAnswerError, parse_math  # noqa: F401  (re-exported: answers read with it)
+from lagrade.notation import YES_NO, TextAnswerError, parse_math  # noqa: F401  (re-exported: answers read with it)
 
 
 def load_toml_answer(path: Path, coordinates: Sequence[str],
@@ -104,8 +104,8 @@ def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
     if isinstance(raw, float):
         return sp.Float(repr(raw))
     if isinstance(raw, str):
-        if raw.strip().lower() in _YES_NO and raw.strip() not in (known or ()):
-            return _YES_NO[raw.strip().lower()]
+        if raw.strip().lower() in YES_NO and raw.strip() not in (known or ()):
+            return YES_NO[raw.strip().lower()]
         return _parse_text(raw, coordinates, known)
     if isinstance(raw, list):
         out = []
@@ -134,8 +134,6 @@ def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
     raise TextAnswerError(f"unsupported value of type {type(raw).__name__}")
 
 
-#: yes/no parts written in words: ``H_conserved = "no"`` (TOML's own true/false are booleans already)
-_YES_NO = {"yes": True, "no": False, "true": True, "false": False}
 
 
 def _key_line(lines: list[str], key: str, start: int = 0) -> int | None:

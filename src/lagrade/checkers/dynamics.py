@@ -469,10 +469,9 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
 def _mass_at(mech: Mechanics, pts, at_rest: bool = False) -> np.ndarray:
     """The mass matrix (n, n, K) at the sampled states (or at them with every velocity zero): the
     Jacobian of Lagrange's equations in q''."""
-    q, qd, t, params = (np.array(pts.args(mech.s.q)), np.array(pts.args(mech.s.qd)), pts[T],
-                        np.array(pts.args(mech.params)).reshape(len(mech.params), pts.K))
+    q, qd, t, params = state_arrays(mech, pts)
     if at_rest:
-        qd = np.zeros_like(np.asarray(qd, dtype=float))
+        qd = np.zeros_like(qd, dtype=float)
     n = len(mech.names)
     return mech._mass_f(*q, *qd, t, *params).reshape(n, n, pts.K)
 

@@ -22,6 +22,7 @@ from lagrade.checkers.base import (
     surplus,
 )
 from lagrade.compare.symbolic import _OutOfTime, proves_zero, time_bound
+from lagrade.notation import YES_NO
 from lagrade.numeric import agree, compile_exprs, evaluate, scale_of
 from lagrade.reference import Mechanics
 from lagrade.result import PartResult
@@ -317,16 +318,13 @@ def _another_root(f, root: np.ndarray, others: list[np.ndarray], domain: tuple[f
     return False
 
 
-_YES_NO = {"yes": True, "no": False, "true": True, "false": False}
-
-
 def check_boolean(ctx: Context, part: Part, value: object) -> PartResult:
     if isinstance(value, sp.logic.boolalg.BooleanAtom):
         value = bool(value)
-    if isinstance(value, str) and value.strip().lower() in _YES_NO:
-        value = _YES_NO[value.strip().lower()]
-    if isinstance(value, sp.Symbol) and value.name.lower() in _YES_NO:
-        value = _YES_NO[value.name.lower()]
+    if isinstance(value, str) and value.strip().lower() in YES_NO:
+        value = YES_NO[value.strip().lower()]
+    if isinstance(value, sp.Symbol) and value.name.lower() in YES_NO:
+        value = YES_NO[value.name.lower()]
     if not isinstance(value, bool):
         raise InvalidAnswer(f"{part.name} should be True or False (or \"yes\" / \"no\")")
     ok = value is part.reference
