@@ -28,6 +28,8 @@ class PartResult(BaseModel):
     feedback: str = ""
     read_as: str | None = Field(default=None, description="the answer as lagrade understood it (LaTeX)")
     read_as_text: str | None = Field(default=None, exclude=True, description="the same, for a terminal")
+    review: str | None = Field(default=None, description="for instructors: why this verdict deserves a look (the "
+                                                          "evidence could not decide it); never a reference value")
     detail: str | None = Field(default=None, exclude=True,
                                description="for instructors: the engine's traceback of an `error`; never "
                                            "serialized, so never in what a student is shown")

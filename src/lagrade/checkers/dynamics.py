@@ -134,15 +134,36 @@ def _confirm(ctx: Context, prove: Callable[[], bool | None], trajectory: Callabl
     return proof, traj
 
 
-def _decide(part: Part, proof: bool | None, traj: Comparison | None, note: str = "") -> PartResult:
-    """Agreement at every random state already holds when this is called: say what else confirmed it."""
+def _decide(ctx: Context, part: Part, proof: bool | None, traj: Comparison | None, note: str = "") -> PartResult:
+    """Agreement at every sampled state (within the preset's ``sample_rtol``) already holds when this
+    is called. A proof settles it; otherwise the trajectories do: motions that separate beyond the
+    preset's tolerance refute the answer (a constant off by 1e-7 passes every sampled state but not
+    a strict trajectory), and evidence that could not decide is flagged for an instructor's review."""
     extra = f" {note}" if note else ""
     if proof:
-        return graded(part, 1.0, "symbolic", f"correct: proved equivalent to the reference.{extra}")
+        res = graded(part, 1.0, "symbolic", f"correct: proved equivalent to the reference.{extra}")
+        if traj is not None and traj.decisive:
+            res.review = ("proved equivalent, yet the integrated motions differ beyond the tolerance: "
+                          f"{traj.describe()}; the integration deserves a look")
+        return res
     if traj is not None and traj.agree:
-        return graded(part, 1.0, "trajectory",
-                      f"correct: equal at every sampled state and {traj.describe()}{_cost(traj)}.{extra}")
-    return graded(part, 1.0, "numeric", f"correct: equal at every sampled state.{extra}")
+        res = graded(part, 1.0, "trajectory",
+                     f"correct: equal at every sampled state and {traj.describe()}{_cost(traj)}.{extra}")
+        if traj.window is not None and traj.why_window.startswith("chaotic") and traj.window < 0.1 * traj.horizon:
+            res.review = (f"chaotic scene: the motions could be compared only over [0, {traj.window:.3g}] of "
+                          f"[0, {traj.horizon:.3g}], so they hardly tested this answer beyond the sampled states")
+        return res
+    if traj is not None and traj.decisive:
+        acc = ctx.accuracy
+        return graded(part, 0.0, "trajectory",
+                      "Incorrect: your answer agrees with the right one at every sampled state to about "
+                      f"{acc.sample_rtol:g} (relative), but not exactly: {traj.describe()} (beyond the "
+                      f"{acc.name} comparison tolerance, rtol {acc.compare_rtol:g}). A constant or coefficient "
+                      "slightly off (a rounded number, say) does this.")
+    res = graded(part, 1.0, "numeric", f"correct: equal at every sampled state.{extra}")
+    why = traj.describe() if traj is not None else "the answer's motion could not be integrated"
+    res.review = f"decided by the sampled states alone: no symbolic proof, and no trajectory evidence ({why})"
+    return res
 
 
 def _wrong(part: Part, fraction: float, message: str, traj: Comparison | None, credit=None) -> PartResult:
@@ -198,8 +219,8 @@ def reduce_by_constraints(expr: sp.Expr, mech: Mechanics) -> sp.Expr:
     return expr.xreplace(mech.constrained) if mech.constrained else expr
 
 
-def _scaling(E_s: np.ndarray, E_r: np.ndarray, groups: int, per: int) -> np.ndarray | None:
-    """Per group of shared parameters, the c with E_s = c E_r at every state, or None."""
+def _scaling(E_s: np.ndarray, E_r: np.ndarray, groups: int, per: int, rtol: float = 1e-8) -> np.ndarray | None:
+    """Per group of shared parameters, the c with E_s = c E_r at every state (within ``rtol``), or None."""
     cs = []
     for g in range(groups):
         sl = slice(g * per, (g + 1) * per)
@@ -208,7 +229,7 @@ def _scaling(E_s: np.ndarray, E_r: np.ndarray, groups: int, per: int) -> np.ndar
         if denom == 0 or not np.all(np.isfinite(a)):
             return None
         c = float(a @ b) / denom
-        if not np.all(agree(a, c * b)):
+        if not np.all(agree(a, c * b, rtol)):
             return None
         cs.append(c)
     return np.array(cs)
@@ -222,11 +243,12 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
     pts, groups, per = _grouped_points(ctx, mech, part)
     E_r = _el_matrix(mech.L, mech, pts, part)
     E_s = _el_matrix(L_s, mech, pts, part)
-    c = _scaling(E_s, E_r, groups, per)
+    rtol = ctx.accuracy.sample_rtol
+    c = _scaling(E_s, E_r, groups, per, rtol)
 
     student_acc = _once(lambda: _lagrange_solver(L_s, mech, part))
 
-    if c is not None and np.allclose(c, 1.0, rtol=1e-8, atol=0):
+    if c is not None and np.allclose(c, 1.0, rtol=rtol, atol=0):
         proof, traj = _confirm(
             ctx, lambda: proves_all_zero([a - b for a, b in zip(mech.lagrange_rows(L_s), mech.EL)],
                                          ctx.symbolic_seconds, ctx.positive),
@@ -239,7 +261,7 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
             "It differs from the usual form by a constant, which changes nothing."
             if constant else "It differs from the usual form by a total time derivative dF/dt, which gives "
                              "the same equations of motion.")
-        return _decide(part, proof, traj, note)
+        return _decide(ctx, part, proof, traj, note)
     if c is not None and np.all(np.abs(c) > 1e-9):
         same = np.allclose(c, c[0], rtol=1e-6)
         factor = (factor_text(float(c[0])) or "a constant factor") if same else "a factor that depends on the parameters"
@@ -433,7 +455,8 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     argv = pts.args(args)
     velocities = set(mech.s.qd)
     rest = [np.zeros_like(np.asarray(a, dtype=float)) if s in velocities else a for s, a in zip(args, argv)]
-    an = analyse_rows(compiled, argv, truth, list(mech.names), reference_jacobian=_mass_at(mech, pts),
+    an = analyse_rows(compiled, argv, truth, list(mech.names), rtol=ctx.accuracy.sample_rtol,
+                      reference_jacobian=_mass_at(mech, pts),
                       at_rest=(rest, _mass_at(mech, pts, at_rest=True)))
 
     def student_acc() -> Vectorized:
@@ -442,7 +465,7 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     if an.fraction >= 1.0:
         proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
                                lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
-        return _decide(part, proof, traj)
+        return _decide(ctx, part, proof, traj)
     _relabel(an, compiled, mech, pts, args, truth)
     named = _eom_mistake(part, mech, compiled, pts.args(args), list(mech.names))
     problems = [] if named is None else [named.rstrip(".")]
@@ -607,7 +630,7 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
     h_s = evaluate([H_s], args, pts.args(args))[0]
     h_r = mech.hamiltonian(q, p, t, params)
     diff = h_s - h_r
-    tol = 1e-8 * scale_of(h_s, h_r)
+    tol = ctx.accuracy.sample_rtol * scale_of(h_s, h_r)
     same = all(np.all(np.abs(diff[g * per:(g + 1) * per] - diff[g * per]) <= tol) for g in range(groups))
 
     student_rates = _once(lambda: _hamiltonian_rates(H_s, mech, part))
@@ -625,7 +648,7 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
 
         proof, traj = _confirm(ctx, prove, lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
         note = "" if np.all(np.abs(diff) <= tol) else "It differs from the usual H by a function of t only."
-        return _decide(part, proof, traj, note)
+        return _decide(ctx, part, proof, traj, note)
     message = _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, (q, p, t, params))
     traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
     return _wrong(part, 0.0, message, traj)
@@ -704,14 +727,14 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
     truth = mech.hamilton_rates(q, p, t, params)
     compiled = CompiledRows(rows, unknowns, args)
     labels = [*(f"{x}'" for x in mech.names), *(f"p_{x}'" for x in mech.names)]
-    an = analyse_rows(compiled, pts.args(args), truth, labels)
+    an = analyse_rows(compiled, pts.args(args), truth, labels, rtol=ctx.accuracy.sample_rtol)
 
     def student_rates() -> Vectorized:
         return compiled.solver
 
     if an.fraction >= 1.0:
         traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
-        return _decide(part, None, traj)
+        return _decide(ctx, part, None, traj)
     problems = [f"equation {i + 1} (for {an.labels[i]}) does not hold for the true motion" for i in an.wrong]
     if an.vanishing_factor:
         problems.append("your equations hold, but one is multiplied by a factor that becomes zero within "

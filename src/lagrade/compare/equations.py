@@ -122,9 +122,11 @@ def analyse_rows(rows: CompiledRows, argv: Sequence[np.ndarray], truth: np.ndarr
     # against its own rounding noise: measure every row against the system's overall size too.
     overall = float(np.nanmax(scale, initial=0.0)) or 1.0
     scale = np.maximum(np.where(np.isfinite(scale), scale, 0.0), 1e-9 * overall)
+    # ... and whatever the tolerance asked, never below the rounding of the system's own terms
+    floor = 1e-13 * overall
     consistent, trivial, main = [], [], []
     for i in range(rows.m):
-        ok = bool(np.all(np.abs(g_true[i]) <= rtol * scale[i]))
+        ok = bool(np.all(np.abs(g_true[i]) <= rtol * scale[i] + floor))
         jnorm = np.abs(J[i])
         empty = bool(np.all(jnorm <= 1e-12 * scale[i]))
         consistent.append(ok)

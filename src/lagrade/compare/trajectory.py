@@ -68,17 +68,21 @@ class Accuracy:
     stiff_index: float = 300.0
     #: shorten the window of chaotic scenes by the measured amplification (see module doc).
     chaos_window: bool = True
+    #: relative tolerance of agreement at the sampled states (the first evidence of every dynamics
+    #: part): rounding of a correct answer written differently stays orders of magnitude below it
+    sample_rtol: float = 1e-8
 
     def describe(self) -> str:
         return (f"{self.name}: integration rtol {self.rtol:g}, atol {self.atol:g}; comparison rtol "
-                f"{self.compare_rtol:g}, atol {self.compare_atol:g}; {self.trajectories} trajectories; "
+                f"{self.compare_rtol:g}, atol {self.compare_atol:g}; sampled states within rtol {self.sample_rtol:g}; "
+                f"{self.trajectories} trajectories; "
                 f"at most {self.max_rhs_evals} evaluations per run")
 
 
 ACCURACY = {
-    "fast": Accuracy("fast", 1e-8, 1e-8, 1e-4, 1e-4, 2, 8000),
+    "fast": Accuracy("fast", 1e-8, 1e-8, 1e-4, 1e-4, 2, 8000, sample_rtol=1e-7),
     "default": Accuracy(),
-    "strict": Accuracy("strict", 1e-12, 1e-12, 1e-8, 1e-8, 6, 60000),
+    "strict": Accuracy("strict", 1e-12, 1e-12, 1e-8, 1e-8, 6, 60000, sample_rtol=1e-10),
 }
 
 #: Rates of a trajectory growing by more than this factor mean a singularity is being approached.
@@ -556,6 +560,11 @@ def amplification(ref_pair: Run, K: int, acc: Accuracy) -> Amplification:
 
 @dataclass
 class Comparison:
+    """Two motions compared. ``agree``: within tolerance over the window. ``decisive`` (when they do
+    not agree): both motions were followed and differ beyond the tolerance inside the window, where
+    amplified rounding cannot explain it, so the difference refutes an answer; otherwise (a motion
+    that could not be followed) it proves nothing either way."""
+
     agree: bool
     horizon: float
     separation_time: float | None = None
@@ -569,6 +578,7 @@ class Comparison:
     window: float | None = None          # compared over [0, window] (<= horizon)
     why_window: str = ""                 # chaos (measured FTLE) or stiffness budget
     ftle: float | None = None
+    decisive: bool = False
 
     def describe(self) -> str:
         at = ""
@@ -682,7 +692,10 @@ def _compare_to_reference(student: Rates, ref: Run, y0: np.ndarray, labels: list
     if bad.any():
         first_t = int(np.argmax(bad.any(axis=(0, 1))))
         comp = int(np.argmax(err[:, :, first_t].max(axis=1)))
-        return Comparison(False, horizon, float(ref.t[first_t]), labels[comp], float(err.max()), **common)
+        # both motions finite where they first differ: a real difference, not a motion lost
+        decisive = bool(np.isfinite(stu.y[..., first_t]).all() and np.isfinite(ref.y[..., first_t]).all())
+        return Comparison(False, horizon, float(ref.t[first_t]), labels[comp], float(err.max()),
+                          decisive=decisive, **common)
     return Comparison(False, horizon, float(stu.t[-1]) if stu.t.size else 0.0, "the motion",
                       note=cannot_integrate(student, y0, labels, stu), **common)
 

@@ -1,0 +1,113 @@
+"""A trajectory disagreement beyond the preset's tolerance refutes; evidence that cannot decide is
+flagged for review; the sampled-state tolerance follows the preset (issue 23, part 1)."""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import pytest
+
+import lagrade
+from lagrade.checkers.base import Context
+from lagrade.checkers.dynamics import _decide
+from lagrade.compare import trajectory as tr
+from lagrade.compare.trajectory import ACCURACY, Comparison
+from lagrade.grade import references
+from lagrade.library import load_problem
+
+REFERENCE = Path(__file__).resolve().parents[1] / "reference_solutions" / "12.14" / "answer.py"
+
+
+def _perturbed_g(tmp_path: Path, eps: str) -> Path:
+    """12.14's exact equations with g scaled by (1 + eps) in both equations."""
+    src = REFERENCE.read_text()
+    for old in ("-(m1 + m2) * g * sin(th1)),", "-g * sin(th2)),"):
+        assert old in src
+    src = src.replace("-(m1 + m2) * g * sin(th1)),", f"-(m1 + m2) * (1 + {eps})*g * sin(th1)),")
+    src = src.replace("-g * sin(th2)),", f"-(1 + {eps})*g * sin(th2)),")
+    path = tmp_path / f"answer_{eps}.py"
+    path.write_text(src)
+    return path
+
+
+def _eom_exact(result) -> lagrade.CheckResult:
+    return next(p for p in result.parts if p.part == "eom_exact")
+
+
+@pytest.fixture
+def loose_samples(monkeypatch):
+    """Presets whose sampled states let a 1e-7 error through: only the trajectories can refute it."""
+    for name in ("strict", "default"):
+        monkeypatch.setitem(tr.ACCURACY, f"{name}-loose",
+                            dataclasses.replace(ACCURACY[name], name=f"{name}-loose", sample_rtol=1e-5))
+
+
+def test_a_trajectory_beyond_tolerance_refutes(tmp_path, loose_samples):
+    part = _eom_exact(lagrade.check("12.14", _perturbed_g(tmp_path, "1e-7"), accuracy="strict-loose"))
+    assert part.verdict == "incorrect" and part.method == "trajectory"
+    assert "separates from the true one" in part.feedback
+    # the default comparison (rtol 1e-6) cannot see a 1e-7 error over the window: no refutation there
+    assert _eom_exact(lagrade.check("12.14", _perturbed_g(tmp_path, "1e-7"), accuracy="default-loose")).verdict == "correct"
+    # but a 1e-6 error it can
+    part = _eom_exact(lagrade.check("12.14", _perturbed_g(tmp_path, "1e-6"), accuracy="default-loose"))
+    assert part.verdict == "incorrect" and part.method == "trajectory"
+
+
+def test_the_right_equations_pass_every_preset_and_the_loosened_ones(tmp_path, loose_samples):
+    for accuracy in ("fast", "default", "strict", "default-loose", "strict-loose"):
+        result = lagrade.check("12.14", REFERENCE, accuracy=accuracy)
+        assert result.full_marks, (accuracy, result)
+        assert not any(p.review for p in result.parts), accuracy
+
+
+@pytest.mark.parametrize(("eps", "rejected_by"), [
+    ("1e-5", {"fast", "default", "strict"}),
+    ("1e-7", {"default", "strict"}),
+    ("1e-9", {"strict"}),
+])
+def test_the_sampled_states_follow_the_preset(tmp_path, eps, rejected_by):
+    """The issue's case: g off by 1e-7 passed every preset, so --accuracy changed no verdict."""
+    for accuracy in ("fast", "default", "strict"):
+        verdict = _eom_exact(lagrade.check("12.14", _perturbed_g(tmp_path, eps), accuracy=accuracy)).verdict
+        assert (verdict != "correct") == (accuracy in rejected_by), (eps, accuracy, verdict)
+
+
+def _ctx_part(accuracy: str = "default"):
+    problem = load_problem("12.14")
+    return Context(problem, references(problem), ACCURACY[accuracy]), problem.part("eom_exact")
+
+
+def _comparison(**kw) -> Comparison:
+    base = {"agree": False, "horizon": 2.0, "separation_time": 0.5, "component": "theta1", "method": "DOP853",
+            "rtol": 1e-10, "window": 2.0}
+    return Comparison(**{**base, **kw})
+
+
+def test_a_motion_that_could_not_be_followed_is_flagged_not_refuted():
+    ctx, part = _ctx_part()
+    res = _decide(ctx, part, None, _comparison(note="the true motion could not be followed numerically"))
+    assert res.verdict == "correct" and res.method == "numeric"
+    assert res.review and "sampled states alone" in res.review
+    res = _decide(ctx, part, None, None)
+    assert res.verdict == "correct" and res.review
+
+
+def test_a_proof_outweighs_a_disagreeing_integration_but_is_flagged():
+    ctx, part = _ctx_part()
+    res = _decide(ctx, part, True, _comparison(decisive=True))
+    assert res.verdict == "correct" and res.method == "symbolic" and res.review
+
+
+def test_a_chaotic_window_too_short_to_test_is_flagged():
+    ctx, part = _ctx_part()
+    short = _comparison(agree=True, window=0.05, why_window="chaotic: finite-time Lyapunov exponent 9/s measured")
+    res = _decide(ctx, part, None, short)
+    assert res.verdict == "correct" and res.review and "chaotic" in res.review
+    assert _decide(ctx, part, None, _comparison(agree=True)).review is None
+
+
+def test_review_reaches_the_json_but_no_reference():
+    ctx, part = _ctx_part()
+    res = _decide(ctx, part, None, None)
+    assert "review" in res.model_dump(mode="json")
