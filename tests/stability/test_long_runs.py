@@ -4,7 +4,7 @@ Reason: a symplectic method (Stormer-Verlet) conserves a modified energy exactly
 stays bounded (it oscillates, it does not grow) however long the run; an adaptive non-symplectic method
 such as the grader's default DOP853 lets it drift. Measured and printed here (pytest -s shows it):
 the symplectic error over 10^4 periods, and the default's drift rate (measured over 300 periods, since
-10^4 periods of adaptive DOP853 would take minutes) extrapolated to 10^4 periods.
+10^4 periods of adaptive DOP853 would take minutes) extrapolated to 10^4 periods, and bounded.
 """
 
 from __future__ import annotations
@@ -54,7 +54,10 @@ def test_symplectic_energy_error_stays_bounded_over_ten_thousand_periods(mech, r
     assert np.all(last <= 1.05 * first)        # bounded: no secular growth
 
 
-def test_default_integrator_energy_drift_is_measured(mech, record_property):
+def test_default_integrator_energy_drift_is_bounded(mech, record_property):
+    """The drift of the grader's DOP853 at its default rtol 1e-10 is measured (printed) and bounded:
+    under 2.5e-10 of the energy per period, under 7e-8 over 300 periods (about three times what
+    it measures); tests/stability/test_grading_path.py bounds it over 1000 periods on the grading path."""
     P = params(mech, 2, m=1.0, l=L, g=G)
     periods = 300
     horizon = periods * _period(AMPLITUDES).max()
@@ -68,11 +71,5 @@ def test_default_integrator_energy_drift_is_measured(mech, record_property):
     print(f"\nDOP853 rtol 1e-10 over {periods} periods: relative energy error at the end {err[:, -1]}, "
           f"drift {slope} per period, extrapolated to 10^4 periods {slope * 1e4}")
     record_property("dop853_drift_per_period", [float(s) for s in slope])
-    # it drifts: the error grows systematically (end well above the first tenth), small as it is. Each
-    # trajectory takes its own steps, so the easy small swing takes long ones whose dense-output error
-    # (~1e-10) is as large as its drift over 300 periods: the drift is asserted on the large swing,
-    # where it is 100 times that.
-    tenth = err.shape[1] // 10
-    assert np.abs(err[1, -1]) > 2 * np.abs(err[1, :tenth]).max()
-    assert slope[1] < 0 and abs(slope[1] * periods) > 0.5 * abs(err[1, -1])
-    assert np.all(np.abs(err[:, -1]) < 1e-6)
+    assert np.all(np.abs(slope) < 2.5e-10)
+    assert np.all(np.abs(err).max(axis=1) < 7e-8)

@@ -46,9 +46,10 @@ def test_a_spherical_pendulum_heading_for_the_pole_is_reported():
     mech = mechanics("12.16")
     P = params(mech, 1, m=1.0, R=1.0, g=9.8)
     y0 = np.array([[0.5], [0.0], [-1.0], [1e-5]])      # theta, phi, theta', phi'
-    run = integrate(reference_rates(mech, P), y0, 2.0, replace(ACCURACY["default"], max_rhs_evals=10**5))
-    assert not run.ok
-    assert "singularity" in run.message
+    for rates in (reference_rates(mech, P), mech.lagrange_rates(P)):   # numpy, and the grading path
+        run = integrate(rates, y0, 2.0, replace(ACCURACY["default"], max_rhs_evals=10**5))
+        assert not run.ok
+        assert run.message.startswith("trajectory 1 approaches a singularity at t = "), run.message
 
 
 def test_a_spherical_pendulum_that_stays_clear_is_integrated_faithfully():
@@ -70,6 +71,7 @@ def test_a_central_force_orbit_falling_into_r_zero_is_reported():
     mech = mechanics("12.48")
     P = params(mech, 1, m=1.0, k=1.0, a=0.1)
     y0 = np.array([[1.0], [0.0], [-0.5], [1e-4]])      # r, theta, r', theta': almost radial, falling in
-    run = integrate(reference_rates(mech, P), y0, 5.0, replace(ACCURACY["default"], max_rhs_evals=10**5))
-    assert not run.ok
-    assert "singularity" in run.message or "more than" in run.message
+    for rates in (reference_rates(mech, P), mech.lagrange_rates(P)):   # numpy, and the grading path
+        run = integrate(rates, y0, 5.0, replace(ACCURACY["default"], max_rhs_evals=10**5))
+        assert not run.ok
+        assert run.message.startswith("trajectory 1 approaches a singularity at t = 0.76"), run.message
