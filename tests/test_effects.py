@@ -7,6 +7,8 @@ and it is still the scene's dynamics (same accelerations as the engine's generic
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 from click.testing import CliRunner
@@ -111,3 +113,81 @@ def test_bench_effects_prints_machinery_and_costs():
     res = CliRunner().invoke(bench, ["effects", "12.4", "--repeat", "1"])
     assert res.exit_code == 0, res.output
     assert "contact-loss events: lam = 0" in res.output and "all/declared" in res.output
+
+
+# ----------------------------------------------------------------------------- dry friction, however written
+
+def _friction_forms():
+    import sympy as sp
+
+    v, w, mu, N = sp.symbols("x_d y_d mu N")
+    jump = {
+        "sign": -mu * N * sp.sign(v),
+        "v/|v|": -mu * N * v / sp.Abs(v),
+        "|v|/v": -mu * N * sp.Abs(v) / v,
+        "Heaviside": -mu * N * (sp.Heaviside(v) - sp.Heaviside(-v)),
+        "Piecewise on v > 0": sp.Piecewise((-mu * N, v > 0), (mu * N, True)),
+        "Piecewise on v < 0": sp.Piecewise((mu * N, v < 0), (-mu * N, True)),
+        "relative velocity": -mu * N * (v - w) / sp.Abs(v - w),
+    }
+    smooth = {"quadratic drag": -mu * v * sp.Abs(v), "a speed": mu * sp.Abs(v), "linear drag": -mu * v}
+    return {v, w}, v, jump, smooth
+
+
+def test_every_form_of_dry_friction_is_read_as_sign_and_drag_is_not():
+    import sympy as sp
+
+    from lagrade.effects import dry_friction_form
+
+    velocities, v, jump, smooth = _friction_forms()
+    for name, force in jump.items():
+        canonical = dry_friction_form(force, velocities)
+        assert canonical.atoms(sp.sign), name
+        assert not canonical.has(sp.Abs, sp.Heaviside, sp.Piecewise), (name, canonical)
+        # the same force away from zero speed
+        for speed in (0.7, -1.3):
+            at = {v: speed, sp.Symbol("y_d"): 0.2, sp.Symbol("mu"): 0.4, sp.Symbol("N"): 2.0}
+            assert abs(float(canonical.subs(at)) - float(force.subs(at))) < 1e-12, name
+    for name, force in smooth.items():
+        assert dry_friction_form(force, velocities) == force, name
+
+
+@pytest.mark.parametrize("law", ["-mu*m*g*x_d/Abs(x_d)", "-mu*m*g*Abs(x_d)/x_d", "-mu*m*g*sign(x_d)"])
+def test_dry_friction_declared_as_drag_is_rejected(law):
+    """x_d/Abs(x_d) used to pass as drag: dry friction needs dissipation_friction (sticking)."""
+    from lagrade.reference import Mechanics
+    from lagrade.spec import Problem, SceneError
+
+    data = {"id": "t", "title": "block", "parameters": [{"name": "m"}, {"name": "mu"}, {"name": "g"}],
+            "systems": [{"effects": ["gravity", "dissipation_drag"], "T": "m*x_d**2/2", "V": "0",
+                         "Q": {"x": law}, "coordinates": [{"name": "x"}]}],
+            "parts": [{"name": "L", "kind": "lagrangian"}]}
+    problem = Problem.model_validate(data)
+    with pytest.raises(SceneError, match="dry friction.*declare dissipation_friction") as info:
+        Mechanics(problem, problem.systems[0])
+    assert info.value.system == "" and info.value.field == "effects"
+    data["systems"][0]["effects"] = ["gravity", "dissipation_friction"]
+    problem = Problem.model_validate(data)
+    Mechanics(problem, problem.systems[0])
+
+
+def test_check_names_the_problem_file_and_line_of_an_undeclared_effect(tmp_path):
+    """One line (file:line: what to declare), exit 2: never a traceback."""
+    import subprocess
+    import sys
+
+    src = (Path(__file__).resolve().parents[1] / "problems" / "12.35.toml").read_text()
+    old_q = next(line for line in src.splitlines() if line.startswith("Q = { theta"))
+    old_effects = next(line for line in src.splitlines() if line.startswith("effects = ["))
+    src = src.replace(old_q, 'Q = { theta = "-mu*m*a**2*theta_d/Abs(theta_d)" }')
+    src = src.replace(old_effects, 'effects = ["holonomic_constraint", "constraint_force", "dissipation_drag"]')
+    (tmp_path / "12.35.toml").write_text(src)
+    line = 1 + src.splitlines().index('effects = ["holonomic_constraint", "constraint_force", "dissipation_drag"]')
+    answer = Path(__file__).resolve().parents[1] / "reference_solutions" / "12.35" / "answer.py"
+    r = subprocess.run([sys.executable, "-m", "lagrade", "check", "12.35", str(answer), "--problems", str(tmp_path)],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 2
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and "Traceback" not in r.stderr
+    assert lines[0].startswith(f"lagrade: {tmp_path / '12.35.toml'}:{line}: ")
+    assert lines[0].endswith("declare dissipation_friction")

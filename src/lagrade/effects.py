@@ -64,6 +64,58 @@ class EffectsError(ValueError):
     """A scene that uses an effect it does not declare."""
 
 
+def _jumps(expr: sp.Expr, arg: sp.Expr, velocities: set[sp.Symbol]) -> bool:
+    """Does ``expr`` jump where ``arg`` (a function of the velocities) crosses zero? Measured at a
+    random point: the velocity ``arg`` is linear in is set to ``arg = +-1e-9``, the rest in [0.5, 1.5].
+    v/|v| jumps by 2; v|v| (quadratic drag) does not (2e-18 against its size 1 at unit speed)."""
+    import numpy as np
+
+    v = next((x for x in sorted(arg.free_symbols & velocities, key=str)
+              if sp.diff(arg, x).free_symbols.isdisjoint({x})), None)
+    if v is None:
+        return True  # a switch of a nonlinear velocity argument: treat it as a jump
+    rng = np.random.default_rng(7)
+    others = {x: float(rng.uniform(0.5, 1.5)) for x in expr.free_symbols | arg.free_symbols if x != v}
+    slope = float(sp.diff(arg, v).xreplace(others))
+    if slope == 0:
+        return True
+    at_zero = -float(arg.xreplace({**others, v: 0})) / slope
+
+    def value(dv: float) -> float:
+        return complex(expr.xreplace({**others, v: sp.Float(at_zero + dv / slope, 30)}).evalf(30)).real
+
+    size = max(abs(value(1.0)), abs(value(-1.0)), 1e-300)
+    return abs(value(1e-9) - value(-1e-9)) > 1e-6 * size
+
+
+def dry_friction_form(expr: sp.Expr, velocities: set[sp.Symbol]) -> sp.Expr:
+    """A force law that jumps when a velocity changes sign, written with ``sign()``: ``v/Abs(v)``,
+    ``Abs(v)/v``, ``Heaviside(v)`` and a two-branch ``Piecewise`` on ``v > 0`` are dry friction
+    as much as ``sign(v)`` is, and the scene model's sticking and breakaway need to see them so.
+    Continuous laws (``v*Abs(v)``, quadratic drag) keep their ``Abs``."""
+    expr = sp.sympify(expr)
+    rep: dict[sp.Basic, sp.Basic] = {}
+    for h in expr.atoms(sp.Heaviside):
+        if h.args[0].free_symbols & velocities:
+            rep[h] = (1 + sp.sign(h.args[0])) / 2
+    for pw in expr.atoms(sp.Piecewise):
+        cond = pw.args[0].cond if len(pw.args) == 2 and pw.args[1].cond == sp.true else None
+        if isinstance(cond, (sp.StrictGreaterThan, sp.GreaterThan, sp.StrictLessThan, sp.LessThan)) \
+                and (cond.lhs - cond.rhs).free_symbols & velocities:
+            arg = cond.lhs - cond.rhs if isinstance(cond, (sp.StrictGreaterThan, sp.GreaterThan)) else cond.rhs - cond.lhs
+            A, B = pw.args[0].expr, pw.args[1].expr
+            rep[pw] = (A + B) / 2 + (A - B) / 2 * sp.sign(arg)
+    expr = expr.xreplace(rep) if rep else expr
+    for ab in sorted(expr.atoms(sp.Abs), key=sp.default_sort_key):
+        arg = ab.args[0]
+        if arg.free_symbols & velocities and _jumps(expr, arg, velocities):
+            expr = expr.xreplace({ab: arg * sp.sign(arg)})
+            # sign(a)**k away from a = 0: sign for odd k, 1 for even
+            expr = expr.replace(lambda e: e.is_Pow and isinstance(e.base, sp.sign) and e.exp.is_Integer,
+                                lambda e: e.base if int(e.exp) % 2 else sp.S.One)
+    return expr
+
+
 def _velocity_switches(expr: sp.Expr, velocities: set[sp.Symbol]) -> list[sp.Expr]:
     """Arguments of Abs and sign that depend on velocities: where a dissipative force changes branch."""
     found: list[sp.Expr] = []
@@ -108,7 +160,8 @@ def validate_effects(mech: Mechanics) -> None:
     if vel_q and not eff & DISSIPATION:
         problems.append(f"Q.{', Q.'.join(vel_q)} depend(s) on the velocities (a velocity-dependent force): declare "
                         "dissipation_drag or dissipation_friction")
-    signs = [n for n, e in q_exprs.items() if any(f.args[0].free_symbols & velocities for f in e.atoms(sp.sign))]
+    signs = [n for n, e in q_exprs.items() if any(f.args[0].free_symbols & velocities
+                                                   for f in dry_friction_form(e, velocities).atoms(sp.sign))]
     if signs and "dissipation_friction" not in eff:
         problems.append(f"Q.{', Q.'.join(signs)} switch(es) sign with the velocity (dry friction): declare "
                         "dissipation_friction")
@@ -122,7 +175,8 @@ def validate_effects(mech: Mechanics) -> None:
             and "small_oscillation_linearization" not in eff:
         problems.append("a part is linearized about equilibrium: declare small_oscillation_linearization")
     if problems:
-        raise SceneError(f"{label} uses effects it does not declare (effects = {sorted(eff)}): " + "; ".join(problems))
+        raise SceneError(f"{label} uses effects it does not declare (effects = {sorted(eff)}): " + "; ".join(problems),
+                         system=sys_.key, field="effects")
 
 
 def machinery(mech: Mechanics) -> Machinery:
@@ -134,7 +188,7 @@ def machinery(mech: Mechanics) -> Machinery:
     if velocity_forces:
         vel = set(mech.s.qd)
         for e in mech.Q:
-            for arg in _velocity_switches(e, vel):
+            for arg in _velocity_switches(dry_friction_form(e, vel), vel):
                 if str(arg) not in switching:
                     switching.append(str(arg))
     with_mult = [c for c in mech.system.constraints if c.multiplier]

@@ -69,7 +69,9 @@ class SceneModel:
         self._Q = None
         if declared.velocity_forces:
             vel = set(s.qd)
-            from lagrade.effects import _velocity_switches
+            from lagrade.effects import _velocity_switches, dry_friction_form
+
+            Q = [dry_friction_form(e, vel) for e in Q]
 
             args: list[sp.Expr] = []
             for e in Q:

@@ -101,7 +101,36 @@ class SpecError(ValueError):
 
 class SceneError(ValueError):
     """A scene whose expressions do not make a usable mechanical system (found while deriving it, or
-    checking the effects it declares: both below the derivation, so the error lives here)."""
+    checking the effects it declares: both below the derivation, so the error lives here).
+    ``system`` and ``field`` say where in the problem file, for a message naming its line."""
+
+    def __init__(self, message: str, system: str | None = None, field: str | None = None):
+        super().__init__(message)
+        self.system, self.field = system, field
+
+
+def scene_line(path: Path, system: str, field: str) -> int | None:
+    """The line of ``field`` in the ``[[systems]]`` table whose key is ``system`` ("" for the only one)."""
+    try:
+        lines = path.read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return None
+    blocks: list[dict] = []
+    inside = False
+    for number, line in enumerate(lines, 1):
+        text = line.strip()
+        if text.startswith("["):
+            inside = text == "[[systems]]"
+            if inside:
+                blocks.append({"key": "", "line": None})
+            continue
+        name, _, value = text.partition("=")
+        if inside and value:
+            if name.strip() == "key":
+                blocks[-1]["key"] = value.strip().strip("\"'")
+            elif name.strip() == field:
+                blocks[-1]["line"] = number
+    return next((b["line"] for b in blocks if b["key"] == system), None)
 
 
 class _Strict(BaseModel):

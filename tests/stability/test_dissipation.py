@@ -42,11 +42,19 @@ def test_energy_decreases_monotonically(pid):
     assert run.events["sign change of theta_d"] == []
 
 
-def _coulomb():
+#: the same dry friction written as a problem author (or a student) may write it
+COULOMB_FORMS = {
+    "sign": "-mu*m*g*sign(x_d)",
+    "v/|v|": "-mu*m*g*x_d/Abs(x_d)",
+    "|v|/v": "-mu*m*g*Abs(x_d)/x_d",
+}   # Heaviside and Piecewise forms (not in the problem-file notation) are in tests/test_effects.py
+
+
+def _coulomb(form: str = "sign"):
     return custom({"id": "12.99", "title": "block on a spring with dry friction",
                    "parameters": [{"name": "m"}, {"name": "k"}, {"name": "mu", "sample": [0.1, 0.3]}, {"name": "g"}],
                    "systems": [{"effects": ["spring", "gravity", "dissipation_friction"], "T": "m*x_d**2/2",
-                                "V": "k*x**2/2", "Q": {"x": "-mu*m*g*sign(x_d)"},
+                                "V": "k*x**2/2", "Q": {"x": COULOMB_FORMS[form]},
                                 "coordinates": [{"name": "x"}]}],
                    "parts": [{"name": "L", "kind": "lagrangian"}]})
 
@@ -59,8 +67,9 @@ def _closed_form_rest(x0, d):
     return x
 
 
-def test_dry_friction_sign_change_is_an_event_and_sticking_matches_the_closed_form():
-    mech = _coulomb()
+@pytest.mark.parametrize("form", list(COULOMB_FORMS))
+def test_dry_friction_sign_change_is_an_event_and_sticking_matches_the_closed_form(form):
+    mech = _coulomb(form)
     K = 3
     P = params(mech, K, m=1.0, k=10.0, mu=[0.2, 0.1, 0.3], g=9.8)
     y0 = np.array([[1.0, -0.8, 2.0], [0.0, 0.0, 0.0]])

@@ -64,11 +64,15 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     # meanwhile (two cores, two things): the grader's imports, and the reference derivations (from
     # the disk cache, or derived now)
     from lagrade.grade import default_grading_seconds, grade_values, references
+    from lagrade.spec import SceneError
 
     grading_seconds = grading_seconds or default_grading_seconds()  # bounded like bulk grading
     refs = references(p)
-    for system in p.systems:
-        refs[system.key]
+    try:
+        for system in p.systems:
+            refs[system.key]
+    except SceneError as exc:  # the problem file's fault, not the answer's: its file and line
+        fail(scene_message(p, exc, problems_dir), as_json)
     from lagrade.native import available
 
     available()  # loads LLVM (about 20 ms) now rather than when the answer's equations are compiled
@@ -97,3 +101,17 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     keep_references(p)  # after the output: the next check of this problem starts warm
     unusable = loaded.fatal is not None and not loaded.values
     leave(2 if unusable else (0 if result.full_marks else 1))
+
+
+def scene_message(problem, exc, problems_dir: tuple[Path, ...]) -> str:
+    """``problems/12.35.toml:30: the scene uses effects it does not declare ...``: one line."""
+    from lagrade.library import problem_path
+    from lagrade.spec import scene_line
+
+    try:
+        path = problem_path(problem.id, problems_dir)
+    except (KeyError, FileNotFoundError, ValueError):
+        return f"problem {problem.id}: {exc}"
+    line = scene_line(path, exc.system, exc.field) if getattr(exc, "field", None) else None
+    return f"{path}:{line}: {exc}" if line else f"{path}: {exc}"
+
