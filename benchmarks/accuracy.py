@@ -1,12 +1,14 @@
-"""What accuracy costs in time, and what stiffness detection saves: ratios measured side by side.
+"""What accuracy costs on the grading path, and what stiffness detection saves.
 
-    python benchmarks/accuracy.py
+    python benchmarks/accuracy.py [--markdown]
 
-1. For 12.14 and 12.43: time and error of each method at the grader's default tolerance (1e-10),
-   as ratios to the grader's default (DOP853), from the work-precision sweep.
+1. For 12.14 and 12.43 at the default preset's tolerance (1e-10): error, median time and evaluations of
+   the grading path (the compiled DOP853 grading runs), of the same integrator with its stages in numpy,
+   and of scipy's methods one trajectory at a time, as ratios to the grading path
+   (`lagrade.research.workprecision`; reference Radau at 1e-13).
 2. For the spring pendulum 12.7 with k/m from 1e1 to 1e6: evaluations and time of DOP853, LSODA and
    Radau over the horizon (what the stiffness rule is based on), and what the grader does ("auto").
-The full sweep with table, CSV and PNG is ``lagrade bench accuracy``.
+The full sweep with table, Markdown, CSV and PNG is ``lagrade bench accuracy``.
 """
 
 from __future__ import annotations
@@ -18,37 +20,35 @@ import numpy as np
 
 from lagrade.compare.trajectory import ACCURACY, estimate_stiffness, integrate
 from lagrade.library import load_problem
-from lagrade.research import workprecision as wp
 from lagrade.reference import Mechanics
+from lagrade.research import workprecision as wp
 
 
-def methods_at_default():
-    print("1. methods at rtol = atol = 1e-10 (ratios to DOP853, the grader's default); best of 3")
-    print(f"   {'scene':<6} {'method':<11} {'error':>9} {'ms':>8} {'evals':>7} {'time ratio':>10}")
+def methods_at_default(md: bool = False):
+    tol = ACCURACY["default"].rtol
+    title = f"methods at rtol = atol = {tol:g} (the default preset), 4 states; time: median of 3 runs"
+    cols = ("scene", "method", "error", "ms", "evals", "time / grading path")
+    lines = []
     for pid in ("12.14", "12.43"):
-        sw = wp.sweep(wp.scene(pid), (1e-10,), wp.METHODS, repeat=3)
-        base = next(r for r in sw.rows if r.method == "DOP853")
-        for r in sw.rows:
-            print(f"   {pid:<6} {r.method:<11} {r.error:9.1e} {r.seconds * 1e3:8.1f} {r.rhs_evals:7d} "
-                  f"{r.seconds / base.seconds:10.2f}")
+        sw = wp.sweep(wp.scene(pid), (tol,), (*wp.METHODS, "numpy"), repeat=3)
+        base = next(r for r in sw.rows if r.preset == "default")
+        lines += [(pid, r.label, f"{r.error:.1e}", f"{r.seconds * 1e3:.2f}", str(r.rhs_evals),
+                   f"{r.seconds / base.seconds:.2f}") for r in sw.rows if r.tol == tol]
+    _print("1. " + title, cols, lines, md)
 
 
-def stiffness_sweep():
-    print("\n2. spring pendulum 12.7, horizon 2, 4 trajectories near the spring's equilibrium, rtol 1e-10")
+def stiffness_sweep(md: bool = False):
+    """The grader's own rates and integrator (`integrate` on `Mechanics.lagrange_rates`), per method."""
     problem = load_problem("12.7")
     mech = Mechanics(problem, problem.systems[0])
-    K, n = 4, 2
+    K = 4
     rng = np.random.default_rng(3)
-    print(f"   {'k/m':>7} {'index':>8} {'stiff':>5} | " + " | ".join(f"{m:>17}" for m in
-                                                              ("DOP853", "LSODA", "Radau", "auto (grader)")))
+    lines = []
     for km in (1e1, 1e2, 1e3, 1e4, 1e5, 1e6):
         P = np.array([np.ones(K), np.full(K, km), np.ones(K), np.full(K, 9.8)])
         y0 = np.array([1.0 + 9.8 / km + rng.uniform(-1e-3, 1e-3, K), rng.uniform(-1, 1, K),
                        rng.uniform(-0.05, 0.05, K), rng.uniform(-1, 1, K)])
-
-        def rates(t, Y):
-            return np.concatenate([Y[n:], mech.accelerations(Y[:n], Y[n:], np.full(K, t), P)])
-
+        rates = mech.lagrange_rates(P)
         st = estimate_stiffness(rates, y0, 2.0, ACCURACY["default"])
         cells = []
         for method in ("DOP853", "LSODA", "Radau", "auto"):
@@ -57,13 +57,34 @@ def stiffness_sweep():
             start = time.perf_counter()
             run = integrate(rates, y0, 2.0, acc)
             secs = time.perf_counter() - start
-            extra = f" [0,{run.horizon:.2g}]" if method == "auto" and run.horizon < 2.0 else ""
-            cells.append(f"{run.rhs_evals:>6}{'' if run.ok else '!'} {secs:6.2f}s{extra}")
-        print(f"   {km:7.0e} {st.index:8.0f} {str(st.stiff):>5} | " + " | ".join(f"{c:>17}" for c in cells))
-    print("   (evaluations, seconds; '!' = stopped at the budget of 100000 evaluations;"
-          " auto's window shown when shortened)")
+            evals = f"> {budget}" if not run.ok and "more than" in run.message else str(run.rhs_evals)
+            if method == "auto":
+                evals += f" ({run.method}" + (f", window [0, {run.horizon:.2g}])" if run.horizon < 2.0 else ")")
+            cells.append(evals if md else f"{evals} {secs:.2f}s")
+        lines.append((f"{km:.0e}", f"{st.index:.0f}", str(st.stiff), *cells))
+    _print("2. spring pendulum 12.7, horizon 2, 4 trajectories near the spring's equilibrium, rtol 1e-10; "
+           "batched evaluations" + ("" if md else " and seconds"),
+           ("k/m", "index", "stiff", "DOP853", "LSODA", "Radau", "grader (auto)"), lines, md)
+
+
+def _print(title: str, cols: tuple[str, ...], lines: list[tuple[str, ...]], md: bool) -> None:
+    print(title)
+    if md:
+        print("\n| " + " | ".join(cols) + " |\n|" + "---|" * len(cols))
+        for line in lines:
+            print("| " + " | ".join(line) + " |")
+    else:
+        widths = [max(len(c), *(len(x[i]) for x in lines)) for i, c in enumerate(cols)]
+        for line in (cols, *lines):
+            print("   " + "  ".join(x.rjust(w) for x, w in zip(line, widths)))
+    print()
 
 
 if __name__ == "__main__":
-    methods_at_default()
-    stiffness_sweep()
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--markdown", action="store_true", help="Markdown tables (for docs/numerics.md)")
+    args = parser.parse_args()
+    methods_at_default(args.markdown)
+    stiffness_sweep(args.markdown)
