@@ -136,3 +136,27 @@ def test_report_in_headless_chromium(graded):
             assert f'<tr data-part="{part}">' in dom and f">{verdict}<" in dom
         if student == "bob":
             assert "<math" in dom and "<mover" in dom  # answers rendered as math, with dots for d/dt
+
+
+def test_verdicts_to_review_reach_the_class_page_and_tracebacks_no_student_page(graded, tmp_path):
+    """A part whose evidence could not decide (``review``) and an engine ``error`` (with its traceback)
+    are listed for the instructor on the class page; the traceback never reaches a student's page."""
+    tmp, db, _ = graded
+    copy = tmp_path / "hw.sqlite"
+    shutil.copyfile(db, copy)
+    with sqlite3.connect(copy) as con:
+        con.execute("UPDATE parts SET review = 'decided by the sampled states alone' "
+                    "WHERE student = 'ada' AND problem = '12.43' AND part = 'H'")
+        con.execute("UPDATE parts SET verdict = 'error', detail = 'Traceback (most recent call last): XYZZY' "
+                    "WHERE student = 'bob' AND problem = '12.43' AND part = 'H'")
+    folder = tmp_path / "report"
+    res = CliRunner().invoke(report, [str(copy), "--html", str(folder)])
+    assert res.exit_code == 0, res.output
+    index = (folder / "index.html").read_text()
+    section = index[index.index('<table id="review">'):]
+    section = section[:section.index("</table>")]
+    assert "decided by the sampled states alone" in section and "ada" in section
+    assert "XYZZY" in section and "bob" in section
+    for page in (folder / "students").glob("*.html"):
+        assert "XYZZY" not in page.read_text(), page
+

@@ -19,7 +19,7 @@ from pathlib import Path
 from lagrade.bulk.assignment import part_points
 from lagrade.bulk.exports import feedback_text, file_jail, overrides_of
 from lagrade.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
-from lagrade.bulk.summary import common_mistakes, common_wrong_answers, failure_counts, problem_stats
+from lagrade.bulk.summary import common_mistakes, common_wrong_answers, failure_counts, problem_stats, to_review
 
 CSS = """
 *, *::before, *::after { box-sizing: border-box; }
@@ -183,6 +183,19 @@ def _index(book: Gradebook) -> str:
                    "<th>feedback</th><th class=\"num\">students</th></tr></thead><tbody>")
         out += [f"<tr><td>{escape(p)}</td><td>{escape(part)}</td><td>{escape(fb)}</td><td class=\"num\">{c}</td></tr>"
                 for p, part, fb, c in mistakes]
+        out.append("</tbody></table>")
+    review = to_review(book)
+    if review:
+        out.append("<h2>Verdicts to review</h2><p class=\"muted\">Where the evidence could not decide, or "
+                   "lagrade itself failed on a readable answer (its traceback is here, never on a student's "
+                   "page).</p><table id=\"review\"><thead><tr><th>student</th><th>problem</th><th>part</th>"
+                   "<th>verdict</th><th>why</th></tr></thead><tbody>")
+        for student, problem, p in review:
+            why = escape(p.get("review") or p.get("feedback") or "")
+            if p.get("detail"):
+                why += f"<details><summary>traceback</summary><pre>{escape(p['detail'])}</pre></details>"
+            out.append(f"<tr><td>{escape(student)}</td><td>{escape(problem)}</td><td>{escape(p['part'])}</td>"
+                       f"<td>{escape(p['verdict'])}</td><td>{why}</td></tr>")
         out.append("</tbody></table>")
     fails = failure_counts(book)
     if fails:

@@ -88,6 +88,13 @@ def _first_line(text: str, limit: int = 110) -> str:
     return line if len(line) <= limit else line[: limit - 1] + "…"
 
 
+def to_review(book: Gradebook) -> list[tuple[str, str, dict]]:
+    """(student, problem, part) of every verdict an instructor should look at: the evidence could not
+    decide it (``review``), or lagrade itself failed on the answer (``error``, with its traceback)."""
+    return [(s.student, g.problem, p) for s in book.students for g in s.problems.values() for p in g.parts
+            if p.get("review") or p.get("verdict") == "error"]
+
+
 def failure_counts(book: Gradebook) -> Counter:
     return Counter(g.status for s in book.students for g in s.problems.values() if g.outcome == "failed")
 

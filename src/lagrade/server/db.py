@@ -71,7 +71,7 @@ parts = Table(
     Column("part", String(100), primary_key=True), Column("verdict", String(20), nullable=False),
     Column("score", Float, nullable=False), Column("max_score", Float, nullable=False),
     Column("method", String(20), nullable=False), Column("feedback", Text, nullable=False),
-    Column("answer_text", Text), Column("answer_mathml", Text),
+    Column("answer_text", Text), Column("answer_mathml", Text), Column("review", Text), Column("detail", Text),
     Column("file_hash", String(64), nullable=False), Column("grader_version", String(50), nullable=False),
     ForeignKeyConstraint(["student", "problem"], ["submissions.student", "submissions.problem"], ondelete="CASCADE"),
 )
@@ -153,9 +153,23 @@ class Database:
         else:
             self.engine = create_engine(self.url, pool_pre_ping=True)
             metadata.create_all(self.engine)
+            self._add_missing_columns()
         with self._write, self.engine.begin() as c:
             if self._meta(c, "schema_version") is None:
                 self._set_meta(c, "schema_version", str(SCHEMA_VERSION))
+
+    def _add_missing_columns(self) -> None:
+        """A database of an older server lacks the gradebook's newer columns (`COLUMNS_ADDED`):
+        create_all makes missing tables only, so they are added here, as `Store` does for SQLite."""
+        from sqlalchemy import inspect, text
+
+        from lagrade.bulk.store import COLUMNS_ADDED
+
+        have = {t: {c["name"] for c in inspect(self.engine).get_columns(t)} for t in {t for t, _, _ in COLUMNS_ADDED}}
+        with self.engine.begin() as c:
+            for table, column, definition in COLUMNS_ADDED:
+                if column not in have[table]:
+                    c.execute(text(f"ALTER TABLE {table} ADD COLUMN {column} {definition}"))
 
     def close(self) -> None:
         self.engine.dispose()
@@ -277,7 +291,8 @@ class Database:
                     {"student": row.student, "problem": row.problem, "part": p["part"], "verdict": p["verdict"],
                      "score": p["score"], "max_score": p["max_score"], "method": p["method"],
                      "feedback": p["feedback"], "answer_text": p.get("answer_text"),
-                     "answer_mathml": p.get("answer_mathml"), "file_hash": row.file_hash,
+                     "answer_mathml": p.get("answer_mathml"), "review": p.get("review"), "detail": p.get("detail"),
+                     "file_hash": row.file_hash,
                      "grader_version": row.grader_version} for p in result["parts"]])
             c.execute(insert(grade_log).values(student=row.student, problem=row.problem, file_hash=row.file_hash,
                                                grading_hash=row.grading_hash, grader_version=row.grader_version,
