@@ -56,7 +56,7 @@ def test_template_is_a_valid_answer_file_with_every_part_missing(tmp_path):
     data = json.loads(out)
     assert code == 1
     assert {p["verdict"] for p in data["parts"]} == {"missing"}
-    assert [p["part"] for p in data["parts"]] == ["L", "H", "cyclic", "conserved", "omega"]
+    assert [p["part"] for p in data["parts"]] == ["L", "H", "cyclic", "conserved", "eom_reduced", "omega"]
 
 
 def test_check_reference_exit_0_and_json_shape():

@@ -59,12 +59,13 @@ def test_a_value_graded_again_gets_its_verdict_from_the_memo(pid, monkeypatch):
     memo = VerdictMemo()
     calls = _counting(monkeypatch)
     first = [grade_values(problem, a, read_as=(), memo=memo) for a in answers]
-    graded = len(calls)
-    assert graded == sum(len(a.values) for a in answers) and memo.hits == 0
+    graded, values = len(calls), sum(len(a.values) for a in answers)
+    # a part with admissible formulations (issue 21) may be checked once per formulation
+    assert graded >= values and memo.hits == 0
     again = [grade_values(problem, LoadedAnswer(values={k: _anew(v) for k, v in a.values.items()}),
                           read_as=(), memo=memo) for a in answers]
     assert len(calls) == graded, f"graded again: {calls[graded:]}"
-    assert memo.hits == graded
+    assert memo.hits == values
     assert [r.model_dump() for r in again] == [r.model_dump() for r in first]
 
 

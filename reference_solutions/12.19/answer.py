@@ -24,3 +24,5 @@ eom = [
 ]
 
 Q = {"u": F_x * diff(x, u) + F_y * diff(y, u), "v": F_x * diff(x, v) + F_y * diff(y, v)}
+# Also accepted for eom (the catalogue's form): the same left-hand sides equal to generalized forces Q_u, Q_v
+# left as symbols, i.e. m*A**2*(h2*u'' + ...) = Q_u and m*A**2*(h2*v'' + ...) = Q_v (system "forced").

@@ -19,3 +19,5 @@ eom = [
     Eq((m * z**2 * tan(alpha) ** 2 * phid).diff(t), 0),
 ]
 omega = sqrt(g / h) / tan(alpha)
+# relative equilibrium: the z equation with z' = z'' = 0 gives z*tan(alpha)**2*phi'**2 = g
+equilibrium = {"z": g / (tan(alpha) ** 2 * phid**2)}

@@ -19,3 +19,5 @@ eom = [Eq(m * x.diff(t, 2), m * (g + a0) - k * x)]
 H = p_x**2 / (2 * m) + a0 * t * p_x + k * x**2 / 2 + m * g * height
 hamilton = [Eq(x.diff(t), p_x / m + a0 * t), Eq(p_x.diff(t), m * g - k * x)]
 period = 2 * pi * sqrt(m / k)
+H_conserved = False  # H depends on t explicitly (dH/dt = partial H/partial t = a0*p_x + m*g*a0*t)
+H_is_E = False       # H = E + a0*t*p_x, E = T + V of the mass in the ground frame

@@ -27,6 +27,9 @@ def show_text(p: Problem) -> str:
                        (f"  (multiplier {c.multiplier})" if c.multiplier else ""))
         for q in s.parameters:
             out.append(f"  parameter {q.name:<10} {q.description}{' (> 0)' if q.positive else ''}")
+        for f in s.functions:  # left general by the book: answers may call it, or use the stated one
+            out.append(f"  function  {f.name}({', '.join(f.args)}): {f.description or 'a general function'}; "
+                       f"general, or {f.name} = {f.concrete}")
         out.append(f"  effects: {', '.join(s.effects) or 'none'}")
         out.append("")
     out.append("Parts (bind these names in answer.py):")
@@ -41,6 +44,13 @@ def show_text(p: Problem) -> str:
             detail += "; linearized about equilibrium"
         if part.symbols:
             detail += f"; may use {', '.join(part.symbols)}"
+        others = [a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
+                  or p.system(a.system if a.system is not None else part.system).title or "another reading"
+                  for a in part.alternatives]
+        if others and part.follows is None:  # never a reference value: the formulations' words only
+            detail += f"; also accepted: {'; '.join(others)}"
+        if part.follows:
+            detail += f"; judged for the formulation of your {part.follows}"
         out.append(f"  {'':<12}   -> {detail}")
     return "\n".join(out)
 
@@ -60,7 +70,12 @@ def template_text(p: Problem) -> str:
         if s.key:
             lines.append(f"# system ({s.key}) {s.title}")
         lines.append(f"{', '.join(names)} = coordinates(\"{' '.join(names)}\")")
-        if any(part.kind in ("hamiltonian", "hamilton_eqs") and part.system == s.key for part in p.parts):
+        for f in s.functions:
+            line = f"{f.name} = Function(\"{f.name}\")  # {f.name}({', '.join(f.args)}), general"
+            if line not in lines:  # several systems may share one function (12.39's frames)
+                lines.append(line)
+        if any(part.kind in ("hamiltonian", "hamilton_eqs")
+               and s.key in {part.system, *(a.system for a in part.alternatives)} for part in p.parts):
             moms = [f"p_{n}" for n in names]
             lines.append(f"{', '.join(moms)} = momenta(\"{' '.join(moms)}\")")
     lines.append("")

@@ -12,12 +12,14 @@ import os
 import signal
 import threading
 import traceback
+import weakref
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
 from lagrade.answers.load import LoadedAnswer, load_answer
 from lagrade.checkers import CHECKERS, Context, InvalidAnswer
+from lagrade.checkers.gauge import GAUGE_CHECKERS
 from lagrade.compare.trajectory import ACCURACY
 from lagrade.credit import Credit
 from lagrade.library import load_problem
@@ -120,10 +122,11 @@ RAISE_AGAIN = 0.05
 """CPU seconds between repeated :class:`GradingOutOfTime` raises once the bound is spent."""
 
 
-def _check(ctx: Context, part, value) -> tuple[PartResult, bool]:
-    """The part's grade, and whether it is the value's own (not an error of the engine's)."""
+def _check(ctx: Context, part, value, gauge: bool = False) -> tuple[PartResult, bool]:
+    """The part's grade, and whether it is the value's own (not an error of the engine's). ``gauge``:
+    graded as the H of any admissible Lagrangian L + dF(q, t)/dt (`lagrade.checkers.gauge`)."""
     try:
-        return CHECKERS[part.kind](ctx, part, value), True
+        return (GAUGE_CHECKERS if gauge else CHECKERS)[part.kind](ctx, part, value), True
     except InvalidAnswer as exc:
         return _unusable(part, "invalid", str(exc)), True
     except SceneError:
@@ -150,11 +153,11 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
     ctx = Context(problem, references(problem), ACCURACY[accuracy], hints=hints, credit=credit or Credit())
     asked = [part for part in problem.parts if not only or part.name in only]
     parts: list[PartResult] = []
+    used = Formulations(ctx, answer)
     try:
         with cpu_time_bound(grading_seconds):
             for part in asked:
-                parts.append(_ungradable(part, answer) or _grade_part(ctx, part, answer.values[part.name],
-                                                                      read_as, memo))
+                parts.append(_ungradable(part, answer) or used.grade(part, answer.values[part.name], read_as, memo))
     except GradingOutOfTime as exc:
         parts += [_ungradable(part, answer) or _unusable(part, "invalid", str(exc)) for part in asked[len(parts):]]
     return CheckResult(problem=problem.id, score=round(sum(p.score for p in parts), 6),
@@ -173,13 +176,120 @@ def _ungradable(part, answer: LoadedAnswer) -> PartResult | None:
     return None
 
 
-def _grade_part(ctx: Context, part, value, read_as: tuple[str, ...], memo: VerdictMemo | None) -> PartResult:
-    key = memo.key(ctx, part, value) if memo is not None else None
-    graded_part = memo.get(key) if key is not None else None
-    if graded_part is None:
-        graded_part, own = _check(ctx, part, value)
+#: per verdict memo, the formulation each memoized verdict of a followed part was right in (its key's)
+_CHOICES: weakref.WeakKeyDictionary[VerdictMemo, dict] = weakref.WeakKeyDictionary()
+
+
+class Formulations:
+    """Which formulation each part was graded in, for one answer: a part with ``alternatives`` (the book
+    allows either: a frame, a gauge, planar or 3-D coordinates) is right when it is right in any of them;
+    a part that ``follows`` another is judged in the formulation the student's answer to that one used
+    (H conserved? for the student's own H), or in its primary one when that answer was right in none.
+
+    The choice is made here, above the checkers: each formulation is an ordinary part (another system,
+    another reference), so every checker grades it unchanged."""
+
+    #: the formulation of a part right only as the H of another gauge L + dF/dt: no system states
+    #: answers for it, so a part following it is judged in the primary formulation
+    GAUGE = "<gauge>"
+
+    def __init__(self, ctx: Context, answer: LoadedAnswer) -> None:
+        self.ctx, self.answer = ctx, answer
+        #: part name -> the system key its answer was right in (None: right in none, or not given)
+        self.chosen: dict[str, str | None] = {}
+
+    def variants(self, part) -> list[tuple[object, str, bool]]:
+        """The part as graded in each formulation it may be judged in, primary first, each with the words
+        that name it to the student ("" for the primary, when no alternative changes the system) and
+        whether it is graded up to a gauge term."""
+        forms = [(part, self._words(part.system, "") if any(a.system not in (None, part.system)
+                                                             for a in part.alternatives) else "", False)]
+        for alt in part.alternatives:
+            system = alt.system if alt.system is not None else part.system
+            update = {"system": system, "alternatives": [], "follows": None, "mistakes": alt.mistakes}
+            if alt.reference is not None:
+                update["reference"] = alt.reference
+            if alt.initial is not None:
+                update["initial"] = alt.initial
+            words = alt.says or ("" if alt.gauge else self._words(system, ""))
+            forms.append((part.model_copy(update=update), words, alt.gauge))
+        if part.follows is None:
+            return forms
+        system = self._chosen(part.follows)
+        same = [form for form in forms if system is not None and form[0].system == system and not form[2]]
+        return [same[0] if same else forms[0]]
+
+    def _words(self, system: str, says: str) -> str:
+        return says or self.ctx.problem.system(system).title
+
+    def _chosen(self, name: str) -> str | None:
+        """The formulation of part ``name``, grading it first (silently) if it has not been graded."""
+        if name not in self.chosen:
+            part = self.ctx.problem.part(name)
+            if _ungradable(part, self.answer) is None:
+                self.grade(part, self.answer.values[part.name], (), None)
+            else:
+                self.chosen[name] = None
+        return self.chosen[name]
+
+    def grade(self, part, value, read_as: tuple[str, ...], memo: VerdictMemo | None) -> PartResult:
+        forms = self.variants(part)
+        key = memo.key(self.ctx, part, value) if memo is not None else None
+        if key is not None and part.follows is not None:
+            key = (key, self.chosen.get(part.follows))  # the verdict depends on that choice too
+        # a part others follow needs its formulation as well as its verdict: kept beside the memo
+        followed = any(p.follows == part.name for p in self.ctx.problem.parts)
+        choices = _CHOICES.setdefault(memo, {}) if key is not None and followed else None
+        graded_part = memo.get(key) if key is not None and (choices is None or key in choices) else None
+        if graded_part is not None:
+            if choices is not None:
+                self.chosen[part.name] = choices[key]
+            return _echo(graded_part, value, read_as)
+        graded_part, own, system = self._fresh(part, forms, value)
+        self.chosen[part.name] = system
         if key is not None and own:
             memo.put(key, graded_part)
+            if choices is not None:
+                if len(choices) >= memo.entries:
+                    choices.pop(next(iter(choices)))
+                choices[key] = system
+        return _echo(graded_part, value, read_as)
+
+    def _fresh(self, part, forms, value) -> tuple[PartResult, bool, str | None]:
+        """Grade in the formulations; a following part whose leader matched none (or only up to a gauge
+        term) is judged in the primary one, and told why."""
+        theirs = self.chosen.get(part.follows) if part.follows is not None else None
+        if part.follows is None or theirs not in (None, self.GAUGE):
+            return self._first_right(forms, value, part.follows)
+        graded_part, own, system = self._first_right([(form, "", gauge) for form, _, gauge in forms], value, None)
+        graded_part.feedback += (
+            f" It is judged in the problem's stated formulation: your {part.follows} comes from another admissible "
+            f"Lagrangian (a gauge term dF(q, t)/dt), for which the problem states no answer." if theirs == self.GAUGE
+            else f" It is judged in the problem's stated formulation, since your {part.follows} is missing or right "
+                 f"in none the problem accepts.")
+        return graded_part, own, system
+
+    def _first_right(self, forms, value, follows: str | None) -> tuple[PartResult, bool, str | None]:
+        """The verdict in the first formulation the value is right in; else the primary's, or, when the
+        primary cannot even read it (names of another formulation), the first formulation that can."""
+        fallback, own_all = None, True
+        for form, words, gauge in forms:
+            graded_part, own = _check(self.ctx, form, value, gauge)
+            own_all = own_all and own
+            if words and follows:  # one formulation, the followed part's: say which, right or wrong
+                graded_part.feedback += f" Judged for the formulation of your {follows}: {words}."
+            elif words and graded_part.verdict == "correct":
+                graded_part.feedback += f" You used this formulation: {words}."
+            if graded_part.verdict == "correct":
+                return graded_part, own_all, self.GAUGE if gauge else form.system
+            if fallback is None or (fallback.verdict == "invalid" and graded_part.verdict != "invalid"):
+                if fallback is not None and words:
+                    graded_part.feedback += f" (Read in this formulation: {words}.)"
+                fallback = graded_part
+        return fallback, own_all, None
+
+
+def _echo(graded_part: PartResult, value, read_as: tuple[str, ...]) -> PartResult:
     if "latex" in read_as:
         graded_part.read_as = as_latex(value)
     if "unicode" in read_as:

@@ -16,6 +16,10 @@ limits below are shared with the rebuilding of a sandbox child's values,
 * ``a == b`` is the equation ``Eq(a, b)`` (at top level, in a list, or as a dict value).
 * Any other name is a plain symbol (parameters, momenta like ``p_theta``).  When
   ``known_names`` is given, unknown names are errors with a "did you mean" hint.
+* ``functions`` names the general functions a problem leaves open (``V(r)``) with their number of
+  arguments; ``V(r)`` is then ``Function('V')(r(t))``, ``diff(V(r), r)`` (or ``Derivative``)
+  differentiates with respect to the coordinate, and ``V'(r)``, ``V''(r)`` are the derivatives of a
+  function of one argument, at its argument.
 """
 
 from __future__ import annotations
@@ -23,7 +27,8 @@ from __future__ import annotations
 import ast
 import difflib
 import math
-from collections.abc import Iterable, Sequence
+import re
+from collections.abc import Iterable, Mapping, Sequence
 from functools import lru_cache
 from typing import Any
 
@@ -147,20 +152,30 @@ _FIRST = ("_d", "_dot", "dot")
 _SECOND = ("_dd", "_ddot", "ddot")
 
 
+#: ``V'(r)``, ``V''(r)`` of a general function V: renamed ``V__prime1(r)`` before Python's parser sees it
+_PRIMED_CALL = re.compile(r"\b([A-Za-z][A-Za-z0-9_]*)('+)(?=\s*\()")
+_PRIME = "__prime"
+
+
 class TextAnswerError(ValueError):
     """A plain-text answer could not be read; the message is meant for the student."""
 
 
-def parse_math(text: str, coordinates: Sequence[str], known_names: Iterable[str] | None = None) -> Any:
-    """Parse one plain-text answer into a sympy object (or list/dict/bool of them)."""
+def parse_math(text: str, coordinates: Sequence[str], known_names: Iterable[str] | None = None,
+               functions: Mapping[str, int] | None = None) -> Any:
+    """Parse one plain-text answer into a sympy object (or list/dict/bool of them); ``functions``:
+    general functions (name -> number of arguments) it may call."""
     if isinstance(text, str):
         text = text.replace("^", "**")  # token-level, so x^2 + 1 keeps the precedence of **
+        if functions:  # V'(r): Python has no primes; the call is renamed, and read back in _Reader.call
+            text = _PRIMED_CALL.sub(lambda m: f"{m.group(1)}{_PRIME}{len(m.group(2))}" if m.group(1) in functions
+                                    else m.group(0), text)
     try:
         tree = parse_limited(text, "answer")
     except RebuildError as exc:
         raise TextAnswerError(str(exc)) from None
     try:
-        return _Reader(coordinates, known_names).top(tree.body)  # type: ignore[attr-defined]
+        return _Reader(coordinates, known_names, functions).top(tree.body)  # type: ignore[attr-defined]
     except (TextAnswerError, RecursionError) as exc:
         if isinstance(exc, RecursionError):
             raise TextAnswerError("the answer is nested too deeply") from None
@@ -179,8 +194,11 @@ def _coordinate(name: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
 
 
 class _Reader:
-    def __init__(self, coordinates: Sequence[str], known_names: Iterable[str] | None) -> None:
+    def __init__(self, coordinates: Sequence[str], known_names: Iterable[str] | None,
+                 functions: Mapping[str, int] | None = None) -> None:
         self.coords = {check_name(c, "coordinate name"): _coordinate(c)[0] for c in coordinates}
+        self.functions = {check_name(f, "function name"): n for f, n in (functions or {}).items()
+                          if f not in self.coords}
         self.known = None if known_names is None else set(known_names)
         self.shorthand: dict[str, sp.Expr] = {}
         for name in self.coords:
@@ -274,6 +292,9 @@ class _Reader:
             return self.shorthand[name]
         if name in _FUNCTIONS or name in _SPECIAL_FUNCTIONS:
             raise TextAnswerError(f"'{name}' is a function; write {name}(...)")
+        if name in self.functions:
+            raise TextAnswerError(f"'{name}' is a function of the coordinates; write it with its "
+                                  f"{self.functions[name]} argument(s), e.g. {name}(...)")
         if self.known is not None and name not in self.known:
             raise TextAnswerError(f"unknown name '{name}'{self._hint(name, self._all_names())}")
         return sp.Symbol(name)
@@ -301,6 +322,19 @@ class _Reader:
             return self.coords[fname] if arg == T else sp.Function(fname)(arg)
         if fname in ("Derivative", "diff"):
             return self.derivative(fname, node.args, depth)
+        base, _, primes = fname.partition(_PRIME)
+        if primes.isdigit() and base in self.functions:  # V'(r): the derivative in its argument, at r
+            if self.functions[base] != 1 or len(node.args) != 1:
+                raise TextAnswerError(f"{base}' is for a function of one argument; write diff({base}(...), ...)")
+            if not 0 < int(primes) <= MAX_DERIVATIVE_ORDER:
+                raise TextAnswerError(f"derivative order {primes} out of range")
+            u = sp.Dummy("u")
+            return sp.Subs(sp.Derivative(sp.Function(base)(u), (u, int(primes))), u, self.expr(node.args[0], depth))
+        if fname in self.functions:
+            if len(node.args) != self.functions[fname]:
+                raise TextAnswerError(f"{fname} takes {self.functions[fname]} argument(s), "
+                                      f"not {len(node.args)}")
+            return sp.Function(fname)(*[self.expr(a, depth) for a in node.args])
         if fname == "Rational":
             args = [self.expr(a, depth) for a in node.args]
             if len(args) != 2 or not all(isinstance(a, sp.Integer) for a in args) or args[1] == 0:
@@ -316,7 +350,7 @@ class _Reader:
                 return _FUNCTIONS[fname](*args)
             except TypeError:
                 raise TextAnswerError(f"wrong number of arguments for {fname}()") from None
-        known = [*_FUNCTIONS, *_SPECIAL_FUNCTIONS, *self.coords]
+        known = [*_FUNCTIONS, *_SPECIAL_FUNCTIONS, *self.coords, *self.functions]
         raise TextAnswerError(f"unknown function '{fname}'{self._hint(fname, known)}")
 
     def derivative(self, fname: str, args: list[ast.AST], depth: int) -> Any:
@@ -339,7 +373,7 @@ class _Reader:
                 raise TextAnswerError(f"derivative order {o} out of range")
         for item in spec:
             var = item[0] if isinstance(item, tuple) else item
-            if not isinstance(var, (sp.Symbol, sp.Integer)):
+            if not isinstance(var, (sp.Symbol, sp.Integer)) and not (self.functions and var in self.coords.values()):
                 raise TextAnswerError("differentiate with respect to a symbol such as t")
         return sp.diff(expr, *spec)
 

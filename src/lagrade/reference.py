@@ -15,6 +15,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.compare.rates import CompiledRates
+from lagrade.general_functions import arities, random_function, substitute
 from lagrade.notation import parse_math
 from lagrade.numeric import (
     Vectorized,
@@ -53,9 +54,13 @@ def split_energy(L: sp.Expr, mech: Mechanics) -> tuple[sp.Expr, sp.Expr]:
 class Mechanics:
     """The dynamics of one system of a problem, in plain state symbols."""
 
-    def __init__(self, problem: Problem, system: System):
+    def __init__(self, problem: Problem, system: System, instance: int = 0):
         self.problem = problem
         self.system = system
+        #: which function stands for each general function (`lagrade.general_functions`): instance 0
+        #: is the problem's concrete one, the others random ones
+        self.instance = instance
+        self.functions: dict[str, sp.Lambda] = {}
         self._parsed: dict[tuple, sp.Expr] = {}
         self._points: dict[tuple, object] = {}
         self.runs: dict[tuple, tuple] = {}  # reference integrations (lagrade.compare.trajectory)
@@ -70,6 +75,12 @@ class Mechanics:
         self.multipliers = [sp.Symbol(c.multiplier) for c in system.constraints if c.multiplier]
         known = [p.name for p in self.parameters]
         parse = lambda text, what: self._parse(text, what, known)  # noqa: E731
+        for f in system.functions:
+            if instance:
+                self.functions[f.name] = random_function(f, instance)
+            else:
+                body = self._parse_plain(f.concrete, f"function {f.name}", [*known, *f.args])
+                self.functions[f.name] = sp.Lambda(tuple(sp.Symbol(a) for a in f.args), body)
 
         if system.L is not None:
             L_full = parse(system.L, "L")
@@ -134,8 +145,16 @@ class Mechanics:
     def _parse(self, text: str, what: str, params: Sequence[str]) -> sp.Expr:
         extra = [c.multiplier for c in self.system.constraints if c.multiplier]
         try:
-            expr = parse_math(text, list(self.all_names), known_names=[*params, *extra, "t"])
-            return sp.sympify(to_state(expr, self.all_names))
+            expr = parse_math(text, list(self.all_names), known_names=[*params, *extra, "t"],
+                              functions=arities(self.system))
+            return sp.sympify(to_state(substitute(expr, self.functions), self.all_names))
+        except Exception as exc:  # a one-line reason naming the field
+            raise SceneError(f"system '{self.system.key}', {what}: {exc}") from None
+
+    def _parse_plain(self, text: str, what: str, names: Sequence[str]) -> sp.Expr:
+        """An expression in plain symbols (a general function's concrete form, in its arguments)."""
+        try:
+            return sp.sympify(parse_math(text, [], known_names=[*names, "t"]))
         except Exception as exc:  # a one-line reason naming the field
             raise SceneError(f"system '{self.system.key}', {what}: {exc}") from None
 
@@ -245,6 +264,16 @@ class ReferenceCache:
         if key not in self.systems:
             self.systems[key] = Mechanics(self.problem, self.problem.system(key))
         return self.systems[key]
+
+    def instance(self, key: str, instance: int) -> Mechanics:
+        """System ``key`` with random function ``instance`` (1, 2, ...) put for its general functions;
+        instance 0 is the system itself, with the problem's concrete functions."""
+        if not instance:
+            return self[key]
+        name = f"{key}\0{instance}"  # kept with the systems, so the disk cache holds them too
+        if name not in self.systems:
+            self.systems[name] = Mechanics(self.problem, self.problem.system(key), instance)
+        return self.systems[name]
 
     def size(self) -> int:
         """How much has been derived: grows whenever something new is (the disk cache's dirty check)."""

@@ -87,6 +87,27 @@ KINDS: dict[str, Kind] = {
         "dict coordinate name -> expression in t",
         "satisfies the scene's equations of motion and the `initial` values",
         'none; `initial = { theta = "theta0", theta_d = "0" }`', needs_reference=False),
+    "reduced": Kind(
+        "the equation(s) of motion left once the cyclic coordinates are eliminated (as for eom), or the "
+        "Routhian: an expression in the remaining q, q' and the constant momenta",
+        "the equations define the reduced scene's accelerations; a Routhian's Euler-Lagrange equations are "
+        "the reduced scene's (R = L - p q' or p q' - L)",
+        "derived from the part's `system`: the reduced scene, the constant momenta among its parameters",
+        needs_reference=False),
+    "numerical_solution": Kind(
+        "the motion at the part's numbers: a table {'t': [times], q: [values]} (or rows [t, q...], or "
+        "{time: value} for one coordinate), or a dict coordinate -> expression in t",
+        "within 0.1% of the motion's scale of the reference motion integrated from `initial`, at every time "
+        "given (5 times or more, reaching half the window) or on a grid",
+        "the parameter values, `{ m = \"1\", k = \"1\" }`; `initial` the initial state (numbers); "
+        "`domain` the time window (default [0, horizon])"),
+    "conditions": Kind(
+        "the conditions: a dict quantity -> value ({'param': oo}, {'coord': value}) or a list of "
+        "Eq(quantity, value)",
+        "limits: along them the criterion grows and the `fixed` quantities stay; conditions on the motion: "
+        "it is a motion of the scene, and the named coordinate is left alone, a harmonic oscillator",
+        '`{ grows = "k*l0/(m*g)", fixed = "g/l0" }` (limits of the parameters), or `{ harmonic = "r" }`; '
+        '`symbols = ["oo"]` lets a text answer write oo'),
 }
 
 #: How a part is graded. Dynamics kinds are compared by their equations of motion.
@@ -185,6 +206,22 @@ class Constraint(_Strict):
         None, description="name of the multiplier (the constraint force), usable in references")
 
 
+class GeneralFunction(_Strict):
+    """A function of the coordinates the book leaves general (``V(r)``, ``U(xp, yp)``).
+
+    The scene and answers may use it; a part is graded by substituting several random smooth
+    functions for it (the same in every derivative), or, for an answer that does not use it, with
+    the ``concrete`` one the problem states."""
+
+    name: Annotated[str, Field(pattern=IDENT, description="the function's name, as answers call it (`V`)")]
+    args: list[Annotated[str, Field(pattern=IDENT)]] = Field(
+        description="the coordinates it depends on, in order (`[\"r\"]` for V(r))")
+    concrete: str = Field(description="the function the problem states for definiteness, in its arguments "
+                                      "and the parameters (`k*r**2/2`); answers that do not use the "
+                                      "function are graded with it")
+    description: str = Field("", description="what it is, as `lagrade show` prints it")
+
+
 class System(_Strict):
     """One physical system (a scene). Lettered sub-problems and alternative coordinates are systems."""
 
@@ -202,6 +239,8 @@ class System(_Strict):
     constraints: list[Constraint] = Field([], description="holonomic constraints, each solved for one coordinate")
     equilibrium: dict[str, str] = Field({}, description="the equilibrium linearized parts expand about")
     horizon: float = Field(2.0, description="time window of trajectory comparisons (and of sampled t)")
+    functions: list[GeneralFunction] = Field(
+        [], description="functions of the coordinates left general (`V(r)`): the scene and answers may call them")
 
     @model_validator(mode="after")
     def _scene_is_complete(self) -> System:
@@ -221,6 +260,15 @@ class System(_Strict):
                 raise ValueError(f"system '{self.key}': constraint on unknown coordinate '{c.coordinate}'")
         if self.horizon <= 0:
             raise ValueError("horizon must be positive")
+        fnames = [f.name for f in self.functions]
+        if len(set(fnames)) != len(fnames):
+            raise ValueError(f"system '{self.key}': function names repeat: {fnames}")
+        for f in self.functions:
+            if not f.args or set(f.args) - set(names) or len(set(f.args)) != len(f.args):
+                raise ValueError(f"system '{self.key}': function {f.name} must depend on distinct coordinates "
+                                 f"of the system ({', '.join(names)}), not {f.args}")
+            if f.name in names:
+                raise ValueError(f"system '{self.key}': {f.name} is both a coordinate and a function")
         return self
 
     @property
@@ -235,6 +283,25 @@ class Mistake(_Strict):
     answer: Any = Field(description="the wrong answer, in the notation of references")
     message: str = Field(description="the sentence a student with this answer reads: name the physics, "
                                      "never a reference value")
+
+
+class Alternative(_Strict):
+    """Another admissible formulation of a part: graded in another system, against another reference, or both.
+
+    The book leaves some choices open (a frame, a gauge, planar or 3-D coordinates, a reading of the
+    question): an answer right in any admissible formulation gets full credit, and its feedback names
+    the one used (`lagrade.grade.Formulations`)."""
+
+    system: str | None = Field(None, description="key of the system the part is graded in (default: the part's)")
+    reference: Any = Field(None, description="the right answer in this formulation (default: the part's), by kind")
+    initial: dict[str, str] | None = Field(None, description="trajectory: initial values in this formulation "
+                                                             "(default: the part's)")
+    says: str = Field("", description="the formulation in a student's words, for the feedback (default: the "
+                                      "system's title); never a value")
+    mistakes: list[Mistake] = Field([], description="known wrong answers in this formulation (in its names), "
+                                                  "each with its sentence")
+    gauge: bool = Field(False, description="hamiltonian, hamilton_eqs: accept the H (or Hamilton's equations) of any "
+                                           "Lagrangian L + dF(q, t)/dt of the system, whose momenta are shifted by dF/dq")
 
 
 class Part(_Strict):
@@ -259,6 +326,12 @@ class Part(_Strict):
     initial: dict[str, str] = Field({}, description="trajectory: initial values, keyed q and q_d")
     aliases: list[str] = Field([], description="other names an answer may bind for this part")
     mistakes: list[Mistake] = Field([], description="known wrong answers, each with its sentence")
+    alternatives: list[Alternative] = Field(
+        [], description="other admissible formulations: full credit if the answer is right in any; if in "
+                        "none, the feedback is the primary formulation's")
+    follows: str | None = Field(
+        None, description="an earlier part whose formulation this one is judged in: the alternative with the "
+                          "system the student's answer to that part was right in (else the primary)")
 
     @model_validator(mode="after")
     def _reference_present(self) -> Part:
@@ -274,6 +347,17 @@ class Part(_Strict):
             raise ValueError(f"part '{self.name}': a trajectory part needs 'initial' values")
         if self.domain is not None and not self.domain[0] < self.domain[1]:
             raise ValueError(f"part '{self.name}': domain must be [low, high] with low < high")
+        for alt in self.alternatives:
+            if alt.system is None and alt.reference is None and alt.initial is None and not alt.gauge:
+                raise ValueError(f"part '{self.name}': an alternative needs a system, a reference, initial values "
+                                 f"or gauge = true")
+            if alt.gauge and self.kind not in ("hamiltonian", "hamilton_eqs"):
+                raise ValueError(f"part '{self.name}': gauge = true is for hamiltonian and hamilton_eqs parts, "
+                                 f"not {self.kind}")
+            if alt.reference is not None and self.kind in ("boolean", "integer") and type(alt.reference) is not type(self.reference):
+                raise ValueError(f"part '{self.name}': an alternative's reference must be a {self.kind} like the part's")
+        if self.follows == self.name:
+            raise ValueError(f"part '{self.name}' cannot follow itself")
         for name, (lo, hi) in self.symbol_ranges.items():
             if name not in self.symbols:
                 raise ValueError(f"part '{self.name}': symbol_ranges names '{name}', which is not in symbols")
@@ -314,12 +398,23 @@ class Problem(_Strict):
             clash = set(pnames) & {c.name for c in system.coordinates}
             if clash:
                 raise ValueError(f"system '{system.key}': {sorted(clash)} is both a coordinate and a parameter")
+            clash = set(pnames) & {f.name for f in system.functions}
+            if clash:
+                raise ValueError(f"system '{system.key}': {sorted(clash)} is both a function and a parameter")
         for part in self.parts:
             if part.system not in keys:
                 raise ValueError(f"part '{part.name}' refers to unknown system '{part.system}'")
             system = self.system(part.system)
             if part.linearized and not system.equilibrium:
                 raise ValueError(f"part '{part.name}' is linearized but system '{part.system}' has no equilibrium")
+            for alt in part.alternatives:
+                if alt.system is not None and alt.system not in keys:
+                    raise ValueError(f"part '{part.name}': an alternative refers to unknown system '{alt.system}'")
+                if alt.system is not None and part.linearized and not self.system(alt.system).equilibrium:
+                    raise ValueError(f"part '{part.name}' is linearized but system '{alt.system}' has no equilibrium")
+            earlier = [p.name for p in self.parts[:self.parts.index(part)]]
+            if part.follows is not None and part.follows not in earlier:
+                raise ValueError(f"part '{part.name}' follows '{part.follows}', which is not an earlier part")
         return self
 
     def parameters_of(self, key: str) -> list[Parameter]:
@@ -381,7 +476,7 @@ def markdown_tables() -> str:
         return out + [""]
 
     lines: list[str] = []
-    for model in (Problem, Parameter, System, Coordinate, Constraint, Part, Mistake):
+    for model in (Problem, Parameter, System, Coordinate, Constraint, GeneralFunction, Part, Alternative, Mistake):
         lines += rows(model)
     lines += ["| kind | the student gives | correct when | `reference` |", "|---|---|---|---|"]
     lines += [f"| `{name}` | {k.expects} | {k.correct_when} | {k.reference} |" for name, k in KINDS.items()]

@@ -30,7 +30,7 @@ from __future__ import annotations
 import difflib
 import functools
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 import sympy as sp
@@ -89,19 +89,22 @@ def is_latex(text: str) -> bool:
     return bool(re.search(r"\\[A-Za-z]", s)) or (len(s) >= 2 and s.startswith("$") and s.endswith("$"))
 
 
-def parse_latex_answer(text: str, coordinates: Sequence[str], known_names: Iterable[str] | None = None) -> Any:
+def parse_latex_answer(text: str, coordinates: Sequence[str], known_names: Iterable[str] | None = None,
+                       functions: Mapping[str, int] | None = None) -> Any:
     """Parse one LaTeX answer into what ``parse_math`` would give: an expression, an ``Eq``, or a
     list of them when the text holds several items separated by ``,`` ``;`` or ``\\\\``.
 
     Coordinates (``coordinates``, momenta included) become ``Function(name)(t)``, their time
     derivatives ``Derivative(q(t), t)`` / ``(t, 2)``; other names are plain symbols, checked
-    against ``known_names`` when it is given.  Errors are ``TextAnswerError`` for the student.
+    against ``known_names`` when it is given.  ``functions``: the problem's general functions (name ->
+    number of arguments, one-letter names): ``V(r)``, ``V'(r)`` (the derivative in its argument) and
+    ``\\frac{dV(r)}{dr}``.  Errors are ``TextAnswerError`` for the student.
     """
     from lagrade.notation import TextAnswerError
 
     try:
         pieces = split_items(strip_delimiters(text))
-        reader = _Names(coordinates, known_names)
+        reader = _Names(coordinates, known_names, functions)
         out = [reader.parse_piece(p) for p in pieces]
     except (LatexAnswerError, RebuildError) as exc:
         raise TextAnswerError(str(exc)) from None
@@ -406,6 +409,10 @@ class _Pre:
             return end
         raw, j = got
         count, k = self.primes(j)
+        after = self.skip_ws(k)
+        if self.names.is_function(raw) and after < len(self.toks) and self.toks[after] in ("(", "\\left"):
+            out.append(raw + "'" * count)  # V(r), V'(r): a call sympy reads as one (see _Names.applied)
+            return k
         if count:  # the subscript may also follow the primes: \theta'_1
             if k < len(self.toks) and self.toks[k] == "_" and "_" not in raw:
                 sub_toks, k = self.arg(k + 1)
@@ -663,15 +670,21 @@ def _coordinate_names(coordinates: tuple[str, ...]) -> tuple[dict[str, Any], dic
 
 
 class _Names:
-    def __init__(self, coordinates: Sequence[str], known_names: Iterable[str] | None) -> None:
+    def __init__(self, coordinates: Sequence[str], known_names: Iterable[str] | None,
+                 functions: Mapping[str, int] | None = None) -> None:
         coords, shorthand = _coordinate_names(tuple(coordinates))
         self.coords, self.shorthand = dict(coords), dict(shorthand)  # the reader's own, from shared parts
         self.known = None if known_names is None else set(known_names)
         self.table: dict[str, tuple[str, int]] = {}
+        self.functions = {name: n for name, n in (functions or {}).items() if name not in self.coords}
 
     # names ------------------------------------------------------------------------
     def pool(self) -> set[str]:
-        return {"t", "pi", *self.coords, *self.shorthand, *(self.known or ())}
+        return {"t", "pi", *self.coords, *self.shorthand, *(self.known or ()), *self.functions}
+
+    def is_function(self, raw: str) -> bool:
+        """A one-letter general function of the problem (``V``): sympy reads ``V(r)`` as its call."""
+        return len(raw) == 1 and raw in self.functions
 
     def candidates(self, raw: str) -> list[str]:
         flat = raw.replace("\\", "").replace("{", "").replace("}", "").replace(" ", "")
@@ -777,14 +790,17 @@ class _Names:
             return _FUNCTION_CLASSES[type(node)](*[self.build(a, d) for a in node.args])
         if isinstance(node, sp.Derivative):
             expr = self.build(node.expr, d)
-            total = 0
+            total, spec = 0, []
             for var, count in node.variable_count:
-                if var != T:
-                    raise LatexAnswerError("only time derivatives d/dt are supported")
+                if var != T:  # d/dr of a general function V(r): r is the coordinate r(t)
+                    var = self.build(var, d) if self.functions and isinstance(var, sp.Symbol) else None
+                    if var not in self.coords.values():
+                        raise LatexAnswerError("only time derivatives d/dt are supported")
                 total += int(count)
+                spec.append((var, int(count)))
             if not 0 < total <= MAX_DERIVATIVE_ORDER:
                 raise LatexAnswerError(f"derivative order {total} out of range")
-            return sp.diff(expr, T, total)
+            return sp.diff(expr, *spec)
         if isinstance(node, sp.core.function.AppliedUndef):
             return self.applied(node, d)
         if isinstance(node, sp.Equality):
@@ -797,6 +813,19 @@ class _Names:
     def applied(self, node: Any, depth: int) -> Any:
         """``name(arg)``: sympy reads ``\\theta(t)`` and ``m(a + b)`` alike as a function call."""
         fname = node.func.__name__
+        name = fname.rstrip("'")
+        if name in self.functions:
+            args = [self.build(a, depth) for a in node.args]
+            primes = len(fname) - len(name)
+            if len(args) != self.functions[name] or (primes and len(args) != 1):
+                raise LatexAnswerError(f"{name} takes {self.functions[name]} argument(s)"
+                                       + (", and a prime needs one" if primes else ""))
+            if primes > MAX_DERIVATIVE_ORDER:
+                raise LatexAnswerError(f"derivative order {primes} out of range")
+            if not primes:
+                return sp.Function(name)(*args)
+            u = sp.Dummy("u")  # V'(r): the derivative in its argument, at r
+            return sp.Subs(sp.Derivative(sp.Function(name)(u), (u, primes)), u, args[0])
         raw, order = self.table.get(fname, (fname, 0))
         if len(node.args) != 1:
             raise LatexAnswerError(f"'{fname}(...)' with several arguments is not supported")

@@ -6,10 +6,11 @@ numbers, letters, Greek names, ``\\mathit{...}``, ``+ - \\cdot \\times / ^ =``, 
 braces, ``\\frac``, ``\\sqrt`` and the elementary functions with their argument in parentheses.
 This module reads that language by recursive descent in well under a millisecond and builds what
 sympy's converter (``sympy.parsing.latex._parse_latex_antlr``) builds from ANTLR's tree, node for
-node, with its quirks (``a - b`` as ``a + (-1)*b``, a letter before ``(`` as a function call, an
+node, with its quirks (``a - b`` as ``a + (-1)*b``, a letter before ``(`` as a function call (``V'(r)``
+calls ``V'``), an
 ``x`` between two numbers as a times sign).
 
-Anything else (``d`` and differentials, subscripts, primes, ``|``, ``!``, commas, unknown commands,
+Anything else (``d`` and differentials, subscripts, primes other than in a call ``V'(r)``, ``|``, ``!``, commas, unknown commands,
 two ``=``, digits separated by spaces (one number to sympy), any syntax error) makes it decline with ``None``, and the caller runs sympy's parser,
 which then also words any error. ``tests/test_latex_subset.py`` holds it to sympy's trees on
 generated text.
@@ -80,8 +81,8 @@ def _tokens(text: str) -> list[tuple[str, bool]]:
                 continue
             if not name.isalpha():
                 raise _Decline()
-        elif tok == "d" or not (tok.isascii() and (tok.isalnum() or tok in "+-*/(){}[]^=.")):
-            raise _Decline()  # a d may start a differential; | ! ' _ , & < > and the rest are sympy's
+        elif tok == "d" or not (tok.isascii() and (tok.isalnum() or tok in "+-*/(){}[]^=.'")):
+            raise _Decline()  # a d may start a differential; | ! _ , & < > and the rest are sympy's
         out.append((tok, space))
         space = False
     return out
@@ -207,15 +208,21 @@ class _Reader:
                 return sp.root(base, root, evaluate=False)
             return sp.sqrt(base, evaluate=False)
         if tok is not None and (tok.isalpha() or (tok[0] == "\\" and tok[1:] in _NAMES)):
-            if self.i + 1 < len(self.toks) and self.toks[self.i + 1] == "(":
-                return self.call()
+            primes = 0
+            while self.i + 1 + primes < len(self.toks) and self.toks[self.i + 1 + primes] == "'":
+                primes += 1
+            if primes and (len(tok) != 1 or any(self.spaced[self.i + 1 + k] for k in range(primes + 1))):
+                raise _Decline()  # a prime on a name, or spaced out: sympy's grammar decides
+            if self.i + 1 + primes < len(self.toks) and self.toks[self.i + 1 + primes] == "(":
+                return self.call(primes)
         return self.atom()
 
-    def call(self) -> Any:
-        """A letter or name before ``(`` is a function call to sympy's grammar (``f(x)``)."""
+    def call(self, primes: int = 0) -> Any:
+        """A letter or name before ``(`` is a function call to sympy's grammar (``f(x)``); primes
+        between them belong to the function's name (``V'(r)`` calls ``V'``)."""
         tok = self.toks[self.i]
-        name = tok if len(tok) == 1 else tok[1:]
-        self.i += 2
+        name = (tok if len(tok) == 1 else tok[1:]) + "'" * primes
+        self.i += 2 + primes
         arg = self.expr()
         self.take(")")
         return sp.Function(str(name))(arg)

@@ -74,7 +74,8 @@ def _load_toml(path: Path, problem: Problem, names: dict[str, str]) -> LoadedAns
     known = sorted({p.name for s in problem.systems for p in problem.parameters_of(s.key)}) + \
         [f"delta_{c}" for c in coords] + \
         [s for part in problem.parts for s in part.symbols] + ["t"] + _equation_names(problem, coords)
-    raw, problems = load_toml_answer(path, functions, known)
+    general = {f.name: len(f.args) for s in problem.systems for f in s.functions}
+    raw, problems = load_toml_answer(path, functions, known, general)
     text = path.read_text(encoding="utf-8", errors="replace")
     for prob in problems:
         for name in names:  # the part a problem is about: its line binds it, or (a table) it names it first

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 import tomllib
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -24,9 +24,10 @@ from lagrade.answers.screen import AnswerProblem
 from lagrade.notation import YES_NO, TextAnswerError, parse_math  # noqa: F401  (re-exported: answers read with it)
 
 
-def load_toml_answer(path: Path, coordinates: Sequence[str],
-                     known_names: Iterable[str] | None) -> tuple[dict[str, object], list[AnswerProblem]]:
-    """Read ``answer.toml``: every key is a part; a bad part is a problem, the others still load."""
+def load_toml_answer(path: Path, coordinates: Sequence[str], known_names: Iterable[str] | None,
+                     functions: Mapping[str, int] | None = None) -> tuple[dict[str, object], list[AnswerProblem]]:
+    """Read ``answer.toml``: every key is a part; a bad part is a problem, the others still load.
+    ``functions``: the general functions of the problem (``V`` -> 1 argument) answers may call."""
     path = Path(path)
     fname = path.name
     known = None if known_names is None else list(known_names)
@@ -52,7 +53,7 @@ def load_toml_answer(path: Path, coordinates: Sequence[str],
     for key, raw in data.items():
         line = _key_line(lines, key)
         try:
-            values[key] = _toml_value(raw, coordinates, known, key, lines, line)
+            values[key] = _toml_value(raw, coordinates, known, key, lines, line, functions)
         except TextAnswerError as exc:
             where, message = exc.args if len(exc.args) == 2 else (line, str(exc))
             problems.append(AnswerProblem(file=fname, line=where, message=f"{key}: {message}"))
@@ -79,26 +80,27 @@ def _looks_latex(text: str) -> bool:
     return is_latex(text)
 
 
-def _parse_text(text: str, coordinates: Sequence[str], known: list[str] | None) -> Any:
+def _parse_text(text: str, coordinates: Sequence[str], known: list[str] | None,
+                functions: Mapping[str, int] | None = None) -> Any:
     """One TOML string: LaTeX (a ``\\command`` or ``$...$``) or plain text. Text that is not well
     formed as plain text but reads as LaTeX is LaTeX (``x_0 + v_{x0} t``, with no backslash)."""
     from lagrade.answers.latex import is_latex, parse_latex_answer
 
     if is_latex(text):
-        return parse_latex_answer(text, coordinates, known)
+        return parse_latex_answer(text, coordinates, known, functions)
     try:
-        return parse_math(text, coordinates, known)
+        return parse_math(text, coordinates, known, functions)
     except TextAnswerError as plain:
         if "not well formed" not in str(plain):
             raise
         try:
-            return parse_latex_answer(text, coordinates, known)
+            return parse_latex_answer(text, coordinates, known, functions)
         except TextAnswerError:
             raise plain from None
 
 
 def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
-                key: str, lines: list[str], line: int | None) -> object:
+                key: str, lines: list[str], line: int | None, functions: Mapping[str, int] | None = None) -> object:
     if isinstance(raw, bool) or isinstance(raw, int):
         return raw
     if isinstance(raw, float):
@@ -106,14 +108,14 @@ def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
     if isinstance(raw, str):
         if raw.strip().lower() in YES_NO and raw.strip() not in (known or ()):
             return YES_NO[raw.strip().lower()]
-        return _parse_text(raw, coordinates, known)
+        return _parse_text(raw, coordinates, known, functions)
     if isinstance(raw, list):
         out = []
         for i, item in enumerate(raw):
             if not isinstance(item, str):
                 raise TextAnswerError(f"item {i + 1} of the list should be a string formula")
             try:
-                out.append(_parse_text(item, coordinates, known))
+                out.append(_parse_text(item, coordinates, known, functions))
             except TextAnswerError as exc:
                 raise TextAnswerError(line, f"item {i + 1}: {exc}") from None
         return out
@@ -127,7 +129,7 @@ def _toml_value(raw: Any, coordinates: Sequence[str], known: list[str] | None,
             if not isinstance(item, str):
                 raise TextAnswerError(sub_line, f"{sub} should be a string formula")
             try:
-                out_d[sub] = _parse_text(item, coordinates, known)
+                out_d[sub] = _parse_text(item, coordinates, known, functions)
             except TextAnswerError as exc:
                 raise TextAnswerError(sub_line, f"{sub}: {exc}") from None
         return out_d

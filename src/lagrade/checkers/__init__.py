@@ -1,8 +1,12 @@
 """One checker per kind of part; the grader looks them up here by the part's ``kind``."""
 
 from lagrade.checkers.base import Context, InvalidAnswer
+from lagrade.checkers.conditions import check_conditions
 from lagrade.checkers.dynamics import check_eom, check_hamilton_eqs, check_hamiltonian, check_lagrangian
+from lagrade.checkers.general import for_general_functions
 from lagrade.checkers.motion import check_conserved, check_trajectory
+from lagrade.checkers.numerical import check_numerical_solution
+from lagrade.checkers.reduced import check_reduced
 from lagrade.checkers.values import (
     check_boolean,
     check_equation_root,
@@ -12,7 +16,7 @@ from lagrade.checkers.values import (
     check_names,
 )
 
-CHECKERS = {
+CHECKERS = {kind: for_general_functions(checker) for kind, checker in {
     "lagrangian": check_lagrangian,
     "eom": check_eom,
     "hamiltonian": check_hamiltonian,
@@ -25,6 +29,9 @@ CHECKERS = {
     "names": check_names,
     "conserved": check_conserved,
     "trajectory": check_trajectory,
-}
+    "reduced": check_reduced,
+    "numerical_solution": check_numerical_solution,
+    "conditions": check_conditions,
+}.items()}
 
 __all__ = ["CHECKERS", "Context", "InvalidAnswer"]

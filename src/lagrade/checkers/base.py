@@ -13,6 +13,7 @@ from sympy.core.function import AppliedUndef
 
 from lagrade.compare.trajectory import ACCURACY, Accuracy
 from lagrade.credit import Credit
+from lagrade.general_functions import substitute
 from lagrade.reference import Mechanics, ReferenceCache
 from lagrade.result import Method, PartResult
 from lagrade.spec import Part, Problem
@@ -35,6 +36,9 @@ class Context:
     #: more specific feedback: which term is missing or extra (never the reference itself)
     hints: bool = False
     credit: Credit = field(default_factory=Credit)
+    #: which random function stands for the general functions (`lagrade.general_functions`);
+    #: 0: the problem's concrete one
+    instance: int = 0
 
     @property
     def prove_always(self) -> bool:
@@ -42,7 +46,7 @@ class Context:
         return self.accuracy.name == "strict"
 
     def mech(self, part: Part) -> Mechanics:
-        return self.refs[part.system]
+        return self.refs.instance(part.system, self.instance)
 
     @property
     def positive(self) -> set[str]:
@@ -160,12 +164,17 @@ def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates:
                max_order: int = 2, extra: Iterable[str] = ()) -> sp.Expr:
     params = [p.name for p in mech.parameters]
     coords = list(mech.names)
-    expr = _evaluate_derivatives(expr)
+    try:
+        expr = _evaluate_derivatives(substitute(expr, mech.functions))
+    except ValueError as exc:  # V(r, phi) for V(r)
+        raise InvalidAnswer(f"{part.name}: {exc}") from None
     # A text answer reads every coordinate name of the problem as a function of t; in a system where
     # that name is a parameter (12.8: theta), it is the parameter; so is a multiplier written lam(t).
     nodes = nodes_of(expr)
+    # likewise a constant the part declares (12.41's conserved momentum p_x in x = x0 + p_x t/m)
+    constants = {*params, *extra, *part.symbols}
     stray = {f: sp.Symbol(f.func.__name__) for f in nodes.applied
-             if (f.func.__name__ in params or f.func.__name__ in extra) and f.args == (sp.Symbol("t"),)}
+             if f.func.__name__ in constants and f.args == (sp.Symbol("t"),)}
     if stray:
         expr = expr.xreplace(stray)
         nodes = nodes_of(expr)
@@ -176,9 +185,14 @@ def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates:
         if s.name in coords and not plain_coordinates:
             raise InvalidAnswer(f"'{s.name}' is a plain symbol in {part.name}; a coordinate must be a function of "
                                 f"time: {s.name} = Function('{s.name}')(t), velocity {s.name}.diff(t)")
+        if s.name in mech.functions:
+            args = ", ".join(next(f.args for f in mech.system.functions if f.name == s.name))
+            raise InvalidAnswer(f"'{s.name}' in {part.name} is a function of {args}: write {s.name}({args}), "
+                                f"in answer.py Function('{s.name}')({args})")
         if s.name not in allowed:
             hint = suggest(s.name, allowed)
-            public = sorted({*params, *part.symbols, *mech.all_names}) + ["t"]
+            public = sorted({*params, *part.symbols, *mech.all_names}) + ["t"] + \
+                [f"{f.name}({', '.join(f.args)})" for f in mech.system.functions]
             raise InvalidAnswer(f"unknown name '{s.name}' in {part.name}{hint}; the problem's names are "
                                 f"{', '.join(public)}")
     try:

@@ -12,3 +12,4 @@ eom = [
     Eq(dot(z, 2), cos(alpha) ** 2 * (z * tan(alpha) ** 2 * dot(phi) ** 2 - g)),
 ]
 omega = sqrt(g / h) * cot(alpha)
+equilibrium = {"z": g / (tan(alpha) ** 2 * dot(phi) ** 2)}  # z equation with z' = z'' = 0

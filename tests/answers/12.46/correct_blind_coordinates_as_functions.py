@@ -11,3 +11,8 @@ H = (p.T*Mm.inv()*p)[0]/2 - m*g*l*cos(theta)
 cyclic = [X]
 conserved = [L.diff(dot(X))]
 omega = sqrt(g/(l*M/(M + m)))
+
+# (b) X eliminated: Routhian R = L - p_X*X' with X' = (p_X - m*l*cos(theta)*theta')/(M + m)
+_Xd = (p_X - m * l * cos(theta) * dot(theta)) / (M + m)
+routhian = ((M + m) / 2 * _Xd**2 + m * l * cos(theta) * _Xd * dot(theta) + m * l**2 / 2 * dot(theta) ** 2
+            + m * g * l * cos(theta) - p_X * _Xd)

@@ -12,3 +12,7 @@ H = (m * l**2 * p_X**2 - 2 * m * l * cos(theta) * p_X * p_theta + (M + m) * p_th
 cyclic = [X]
 conserved = [p_X]
 omega = sqrt(g / l * (1 + m / M))
+
+# (b) X eliminated: theta'' solved
+eom_reduced = Eq(dot(theta, 2), -((M + m) * g * sin(theta) + m * l * sin(theta) * cos(theta) * dot(theta) ** 2)
+                 / (l * (M + m * sin(theta) ** 2)))

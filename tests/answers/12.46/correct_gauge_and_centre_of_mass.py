@@ -15,3 +15,7 @@ cyclic = ["X"]
 x_cm = (M * X + m * (X + l * sin(theta))) / (M + m)
 conserved = [(M + m) * x_cm.diff(t)]
 omega = sqrt((M + m) * g / (M * l))
+
+# (b) X eliminated: the theta equation of the reduced Lagrangian, times 2 and as an expression meaning = 0
+eom_reduced = 2 * (l * (M + m * sin(theta) ** 2) * theta.diff(t, 2) + m * l * sin(theta) * cos(theta) * theta.diff(t) ** 2
+                   + (M + m) * g * sin(theta))

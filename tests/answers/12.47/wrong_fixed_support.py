@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=incorrect, H=incorrect, hamilton=partial, period=correct
+# expect: L=incorrect, eom=incorrect, H=incorrect, hamilton=partial, period=correct, H_conserved=incorrect, H_is_E=incorrect
 # The support is treated as fixed: the a0 disappears from the dynamics.
 from lagrade.answer import *
 
@@ -9,3 +9,5 @@ eom = [Eq(m * dot(x, 2), m * g - k * x)]
 H = p_x**2 / (2 * m) + k * x**2 / 2 - m * g * x
 hamilton = [Eq(dot(x), p_x / m), Eq(dot(p_x), m * g - k * x)]
 period = 2 * pi * sqrt(m / k)
+H_conserved = True
+H_is_E = True

@@ -1,5 +1,7 @@
-# expect: Q_a=partial, dW_a=incorrect, Q_b=correct, dW_b=correct, S_t=correct, equilibrium=correct, neutral=correct
-# (a) The tension's virtual work -S*delta_l forgotten when the string length is a coordinate.
+# expect: Q=partial, dW=incorrect, S_t=correct, equilibrium=correct, neutral=correct
+# (a) The tension's virtual work -S*delta_l forgotten when the string length is a coordinate. Only the (a)
+# names are bound: Q and dW are one part each, graded in the formulation the answer is right in, and a
+# second lettered name of the same part would not be graded (lagrade grades one value per part).
 from sympy import symbols, sin
 
 m1, m2, g, alpha, beta = symbols("m1 m2 g alpha beta")
@@ -7,8 +9,6 @@ delta_l1, delta_l = symbols("delta_l1 delta_l")
 Qg = g * (m1 * sin(alpha) - m2 * sin(beta))
 Q_a = {"l1": Qg, "l": m2 * g * sin(beta)}
 dW_a = Qg * delta_l1 + m2 * g * sin(beta) * delta_l
-Q_b = {"l1": Qg}
-dW_b = Qg * delta_l1
 S_t = m1 * m2 * g * (sin(alpha) + sin(beta)) / (m1 + m2)
 equilibrium = m2 * sin(beta) / sin(alpha)
 neutral = True

@@ -11,3 +11,6 @@ H_conserved = False
 dH_dt = diff(H, t)
 H_is_E = True
 eom = [dot(x, 2) - k * exp(-t / tau) / (m * x**2)]
+
+# the solution as separate lists of times and values
+solution = {"t": [0, 1, 2, 3, 4, 5], "x": [1.0, 1.336099, 1.934531, 2.579051, 3.232704, 3.888436]}

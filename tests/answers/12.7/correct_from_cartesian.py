@@ -11,3 +11,7 @@ eom = [
     r * dot(theta, 2) + 2 * dot(r) * dot(theta) + g * sin(theta),
 ]
 omega = sqrt(k) / sqrt(m)
+
+# (a) with the conditions written as equations; (b) keyed by name
+pendulum = [Eq(k, oo)]
+oscillator = {"theta": 0}

@@ -13,3 +13,9 @@ eom = [
 ]
 T_period = 2 * pi * sqrt(m / k)
 omega = 2 * pi / T_period
+
+# (a) the ratio of the radial and pendulum frequencies squared, k*l0/(m*g), made large; (b) theta held at 0
+from sympy import oo
+
+pendulum = {k * l0 / (m * g): oo}
+oscillator = {theta: 0}

@@ -26,3 +26,8 @@ eom = [
     Eq(Derivative(m * r.diff(t), t), m * r * theta.diff(t) ** 2 + m * g * cos(theta) - k * (r - l0)),
     Eq(Derivative(m * r**2 * theta.diff(t), t), -m * g * r * sin(theta)),
 ]
+
+from sympy import oo
+
+pendulum = {k: oo}
+oscillator = {theta: 0, theta.diff(t): 0}

@@ -18,14 +18,14 @@ eom_a = [
 ]
 
 L_b = m * (rd**2 + r**2 * thd**2 + r**2 * sin(th) ** 2 * (phpd + omega) ** 2) / 2
-centrifugal = {"r": m * omega**2 * r * sin(th) ** 2, "theta": m * omega**2 * r * sin(th) * cos(th), "phip": 0}
+centrifugal = {"r": m * omega**2 * r * sin(th) ** 2, "theta": m * omega**2 * r**2 * sin(th) * cos(th), "phip": 0}
 coriolis = {"r": 2 * m * omega * r * sin(th) ** 2 * phpd,
-            "theta": 2 * m * omega * r * sin(th) * cos(th) * phpd,
-            "phip": -2 * m * omega * (rd * sin(th) + r * cos(th) * thd)}
+            "theta": 2 * m * omega * r**2 * sin(th) * cos(th) * phpd,
+            "phip": -2 * m * omega * r * sin(th) * (rd * sin(th) + r * cos(th) * thd)}
 eom_b = [
     Eq(m * (rdd - r * thd**2 - r * sin(th) ** 2 * phpd**2), F_r + centrifugal["r"] + coriolis["r"]),
-    Eq(m * (r * thdd + 2 * rd * thd - r * sin(th) * cos(th) * phpd**2), F_theta + centrifugal["theta"] + coriolis["theta"]),
-    Eq(m * (r * sin(th) * phpdd + 2 * rd * sin(th) * phpd + 2 * r * cos(th) * thd * phpd), F_phi + coriolis["phip"]),
+    Eq(m * (r * thdd + 2 * rd * thd - r * sin(th) * cos(th) * phpd**2), F_theta + (centrifugal["theta"] + coriolis["theta"]) / r),
+    Eq(m * (r * sin(th) * phpdd + 2 * rd * sin(th) * phpd + 2 * r * cos(th) * thd * phpd), F_phi + coriolis["phip"] / (r * sin(th))),
 ]
 
 # ---- the form under test

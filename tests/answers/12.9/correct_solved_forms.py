@@ -18,6 +18,7 @@ eom_b = [
     m * (r * dot(theta, 2) + 2 * rd * thd - r * sin(theta) * cos(theta) * w**2) - F_theta,
     m * (r * sin(theta) * dot(phip, 2) + 2 * rd * sin(theta) * w + 2 * r * cos(theta) * thd * w) - F_phi,
 ]
-centrifugal = {"r": m * omega**2 * r * (1 - cos(theta) ** 2), "theta": m * omega**2 * r * sin(2 * theta) / 2, "phip": 0}
-coriolis = {"r": 2 * m * omega * r * sin(theta) ** 2 * ppd, "theta": m * omega * r * sin(2 * theta) * ppd,
-            "phip": -2 * m * omega * rd * sin(theta) - 2 * m * omega * r * cos(theta) * thd}
+# the generalized forces written with other trig forms: torques for the angles
+centrifugal = {"r": m * omega**2 * r * (1 - cos(theta) ** 2), "theta": m * omega**2 * r**2 * sin(2 * theta) / 2, "phip": 0}
+coriolis = {r: 2 * m * omega * r * sin(theta) ** 2 * ppd, theta: m * omega * r**2 * sin(2 * theta) * ppd,
+            phip: -m * omega * (2 * r * rd * sin(theta) ** 2 + r**2 * sin(2 * theta) * thd)}

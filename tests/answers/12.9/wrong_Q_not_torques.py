@@ -19,6 +19,6 @@ eom_b = [
     diff(m * r**2 * thd, t) - m * r**2 * sin(theta) * cos(theta) * w**2 - F_theta,
     diff(m * r**2 * sin(theta) ** 2 * w, t) - F_phi,
 ]
-centrifugal = {"r": m * omega**2 * r * sin(theta) ** 2, "theta": m * omega**2 * r * sin(theta) * cos(theta), "phip": 0}
-coriolis = {"r": 2 * m * omega * r * sin(theta) ** 2 * ppd, "theta": 2 * m * omega * r * sin(theta) * cos(theta) * ppd,
-            "phip": -2 * m * omega * (rd * sin(theta) + r * cos(theta) * thd)}
+centrifugal = {"r": m * omega**2 * r * sin(theta) ** 2, "theta": m * omega**2 * r**2 * sin(theta) * cos(theta), "phip": 0}
+coriolis = {"r": 2 * m * omega * r * sin(theta) ** 2 * ppd, "theta": 2 * m * omega * r**2 * sin(theta) * cos(theta) * ppd,
+            "phip": -2 * m * omega * r * sin(theta) * (rd * sin(theta) + r * cos(theta) * thd)}

@@ -20,5 +20,5 @@ eom_b = [
     m * (r * sin(theta) * dot(phip, 2) + 2 * rd * sin(theta) * w + 2 * r * cos(theta) * thd * w) - F_phi,
 ]
 centrifugal = {"r": m * omega**2 * r, "theta": 0, "phip": 0}
-coriolis = {"r": 2 * m * omega * r * sin(theta) ** 2 * ppd, "theta": 2 * m * omega * r * sin(theta) * cos(theta) * ppd,
-            "phip": 2 * m * omega * (rd * sin(theta) + r * cos(theta) * thd)}
+coriolis = {"r": 2 * m * omega * r * sin(theta) ** 2 * ppd, "theta": 2 * m * omega * r**2 * sin(theta) * cos(theta) * ppd,
+            "phip": 2 * m * omega * r * sin(theta) * (rd * sin(theta) + r * cos(theta) * thd)}

@@ -1,0 +1,13 @@
+# expect: H=incorrect, hamilton=partial, H_F=correct, hamilton_F=correct
+# -V(x) where +V(x) belongs in H, and p' = +V'(x) in Hamilton's equations.
+from sympy import Eq, Function, symbols
+
+t = symbols("t")
+m, F = symbols("m F")
+x, p_x = Function("x")(t), Function("p_x")(t)
+V = Function("V")
+
+H = p_x**2 / (2 * m) - V(x)
+hamilton = [Eq(x.diff(t), p_x / m), Eq(p_x.diff(t), V(x).diff(x))]
+H_F = p_x**2 / (2 * m) - F * x
+hamilton_F = [Eq(x.diff(t), p_x / m), Eq(p_x.diff(t), F)]

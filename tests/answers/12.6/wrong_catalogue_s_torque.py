@@ -1,0 +1,9 @@
+# expect: Q=incorrect, dW=incorrect
+# Catalogue names, arc length s: the factor R of the torque Q_theta kept although delta_s is a length.
+from lagrade.answer import *
+
+m, R, F_x, F_y = parameters("m R F_x F_y")
+s = coordinates("s")
+delta_s = symbols("delta_s")
+Q = {"s": R * (-F_x * sin(s / R) + F_y * cos(s / R))}
+dW = Q["s"] * delta_s
