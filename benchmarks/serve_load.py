@@ -12,8 +12,10 @@ request waits for its grade (a 202 is polled until graded). Bounded: ``--student
 and everything still unanswered at ``--deadline`` seconds counts as an error.
 
 Prints p50 / p95 / max latency (send to grade received), throughput (grades per second over the
-run), errors (anything but a grade), and lost: attempts a student was given an id for that are not
-graded in the database when the run ends, plus submissions the database does not hold at all.
+run), the CPU time the server process and its graders used during the run (where a burst's time
+goes; benchmarks/serve_profile.py splits a submission into its stages), errors (anything but a
+grade), and lost: attempts a student was given an id for that are not graded in the database when
+the run ends, plus submissions the database does not hold at all.
 """
 
 from __future__ import annotations
@@ -54,6 +56,31 @@ def pick(rng: random.Random, pool: dict, i: int) -> tuple[str, str, bytes]:
     name, data = rng.choice(pool[kind])
     # each student's own file (a comment, in .py and .toml alike): no two attempts share their content
     return kind, name, data + f"\n# student {i}\n".encode()
+
+
+def cpu_seconds(root: int) -> tuple[float, float]:
+    """CPU seconds used so far by process ``root`` itself, and by all its descendants (the grader
+    processes, their zygotes and, through those, the answers' children once reaped); Linux /proc."""
+    tick = os.sysconf("SC_CLK_TCK")
+    parent, used = {}, {}
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            fields = Path(f"/proc/{entry}/stat").read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        parent[int(entry)] = int(fields[1])
+        used[int(entry)] = sum(int(x) for x in fields[11:15]) / tick  # utime stime cutime cstime
+    own = (sum(int(x) for x in Path(f"/proc/{root}/stat").read_text().rsplit(")", 1)[1].split()[11:13]) / tick)
+    below = 0.0
+    for pid in used:
+        p = parent.get(pid)
+        while p and p != root:
+            p = parent.get(p)
+        if p == root and pid != root:
+            below += used[pid]
+    return own, below
 
 
 def free_port() -> int:
@@ -133,9 +160,11 @@ def main() -> None:
                 sys.exit(f"the server did not start: {(work / 'serve.log').read_text()[-2000:]}")
             time.sleep(0.2)
         time.sleep(float(os.environ.get("LAGRADE_LOAD_WARMUP", "15")))  # let the graders warm up first
+        cpu0 = cpu_seconds(server.pid)
         t0 = time.monotonic()
         results = asyncio.run(run(base, tokens, args.spread, args.deadline, args.seed))
         wall = time.monotonic() - t0
+        cpu1 = cpu_seconds(server.pid)
     finally:
         server.send_signal(signal.SIGINT)
         try:
@@ -162,6 +191,10 @@ def main() -> None:
     print(f"  latency p50 {q[49]:.2f} s, p95 {q[94]:.2f} s, max {max(ok, default=float('nan')):.2f} s")
     print(f"  throughput {len(ok) / wall:.2f} grades/s over {wall:.1f} s")
     print(f"  grading time in the graders: {graded_seconds:.1f} s in all ({graded_seconds / max(1, len(ok)):.3f} s a file)")
+    n = max(1, len(results))
+    print(f"  CPU during the run: server process {cpu1[0] - cpu0[0]:.1f} s ({(cpu1[0] - cpu0[0]) / n * 1e3:.0f} ms a "
+          f"submission), graders and answers {cpu1[1] - cpu0[1]:.1f} s ({(cpu1[1] - cpu0[1]) / n * 1e3:.0f} ms a "
+          f"submission), on {os.cpu_count()} cores in {wall:.1f} s")
     print(f"  errors {len(errors)}, lost {lost}")
     for r in errors[:5]:
         print(f"    {r['kind']}: {r['error']}")

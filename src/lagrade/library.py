@@ -1,9 +1,11 @@
 """Where problem files, reference solutions and the reference cache live, and finding a problem by
 its id. The sandbox hides all three from answers, so their places are named here, below both.
 
-Problems are data: the bundled ones ship inside the package (or sit in the source tree for an
-editable install), and an instructor adds their own with ``--problems DIR`` or ``LAGRADE_PROBLEMS``
-without touching the engine.
+Problems are data: the chapter's ship apart from the engine, in the ``lagrade-chapter12``
+distribution (``chapter12/`` in the checkout), so that the ``lagrade`` wheel a student installs to
+check against a course server holds no problem and no reference. An editable install reads the
+checkout's folders in place; an instructor adds their own with ``--problems DIR`` or
+``LAGRADE_PROBLEMS`` without touching the engine.
 """
 
 from __future__ import annotations
@@ -16,11 +18,42 @@ from pathlib import Path
 from lagrade.spec import Problem, SpecError, load_problem_file
 
 _PACKAGE = Path(__file__).resolve().parent
+#: the entry-point group of installed problem data: each names a package whose folder holds
+#: ``problems/`` and ``reference_solutions/`` (chapter12/pyproject.toml declares the chapter's)
+DATA_GROUP = "lagrade.problem_data"
+#: where nothing is: the reference folder of an install without problem data (a student's client)
+_NOWHERE = _PACKAGE / "_no_problem_data"
+
+
+@lru_cache(maxsize=1)
+def data_root() -> Path | None:
+    """The folder that holds the bundled ``problems/`` and ``reference_solutions/``: the source
+    checkout of an editable install, else the first installed ``lagrade.problem_data`` package (by
+    entry-point name), else None. Found without importing anything: a data package runs no code.
+
+    One root, never several: the answer jail hides exactly ``reference_dir()`` and ``problem_dirs()``
+    (:func:`lagrade.answers.child.secret_dirs`), so a second root's references would be readable
+    from site-packages. Other courses' problems come with ``--problems DIR``."""
+    import importlib.util
+    from importlib.metadata import entry_points
+
+    checkout = _PACKAGE.parents[1]  # src/lagrade -> the checkout, in an editable install
+    if (checkout / "pyproject.toml").is_file() and (checkout / "problems").is_dir():
+        return checkout
+    for ep in sorted(entry_points(group=DATA_GROUP), key=lambda e: e.name):
+        try:
+            spec = importlib.util.find_spec(ep.module)
+        except (ImportError, ValueError):
+            continue
+        for place in (spec.submodule_search_locations or []) if spec is not None else []:
+            if (Path(place) / "problems").is_dir():
+                return Path(place).resolve()
+    return None
 
 
 def _bundled(name: str) -> Path:
-    packaged = _PACKAGE / "_data" / name
-    return packaged if packaged.is_dir() else _PACKAGE.parents[1] / name
+    root = data_root()
+    return root / name if root is not None else _NOWHERE / name
 
 
 def problem_dirs(extra: tuple[Path, ...] = ()) -> list[Path]:
@@ -29,7 +62,14 @@ def problem_dirs(extra: tuple[Path, ...] = ()) -> list[Path]:
 
 
 def reference_dir() -> Path:
+    """The bundled reference solutions (a folder that does not exist when no problem data is
+    installed: a student's client, which checks against a course server)."""
     return _bundled("reference_solutions")
+
+
+NO_DATA = ("no problem data is installed (the lagrade package holds none): check against your course "
+           "server with --server URL --token T, install the problems (pip install lagrade-chapter12, "
+           "for instructors), or name a folder with --problems DIR")
 
 
 CACHE_ENV = "LAGRADE_CACHE"
@@ -70,6 +110,8 @@ def problem_ids(extra: tuple[Path, ...] = ()) -> list[str]:
 
 def problem_path(pid: str, extra: tuple[Path, ...] = ()) -> Path:
     index = _index(tuple(problem_dirs(extra)))
+    if not index:
+        raise SpecError(f"no problem '{pid}': {NO_DATA}")
     if pid not in index:
         known = ", ".join(list(index)[:12])
         raise SpecError(f"no problem '{pid}' (known ids: {known}{', ...' if len(index) > 12 else ''})")

@@ -89,14 +89,19 @@ def test_the_zip_holds_what_gradescope_runs(autograder):
         modes = {i.filename: (i.external_attr >> 16) & 0o777 for i in z.infolist()}
         assert z.read("assignment.toml").decode() == ASSIGNMENT
         setup = z.read("setup.sh").decode()
-    wheel = [n for n in names if n.endswith(".whl")]
-    assert {"setup.sh", "run_autograder", "assignment.toml"} <= set(names) and len(wheel) == 1
+    wheels = sorted(n for n in names if n.endswith(".whl"))
+    assert {"setup.sh", "run_autograder", "assignment.toml"} <= set(names) and len(wheels) == 2
     assert modes["setup.sh"] & 0o111 and modes["run_autograder"] & 0o111
-    assert "pip3 install lagrade" not in setup and "lagrade-*.whl" in setup
-    with zipfile.ZipFile(autograder) as z, zipfile.ZipFile(__import__("io").BytesIO(z.read(wheel[0]))) as w:
-        inside = w.namelist()
-    # the wheel is this checkout: the grader, the problems and the reference solutions
-    assert "lagrade/deploy/gradescope.py" in inside and "lagrade/_data/problems/12.43.toml" in inside
+    assert "pip3 install lagrade" not in setup and '"$SRC"/lagrade-*.whl "$SRC"/lagrade_chapter12-*.whl' in setup
+    inside = {}
+    for name in wheels:
+        with zipfile.ZipFile(autograder) as z, zipfile.ZipFile(__import__("io").BytesIO(z.read(name))) as w:
+            inside[name.split("-")[0]] = w.namelist()
+    # the wheels are this checkout: the grader; the problems and the reference solutions apart
+    assert "lagrade/deploy/gradescope.py" in inside["lagrade"]
+    assert not [n for n in inside["lagrade"] if n.endswith(".toml") or "reference_solutions" in n]
+    assert {"lagrade_chapter12/problems/12.43.toml", "lagrade_chapter12/reference_solutions/12.43/answer.py"} \
+        <= set(inside["lagrade_chapter12"])
 
 
 def test_a_right_submission_gets_full_marks(autograder, tmp_path):

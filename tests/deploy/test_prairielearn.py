@@ -67,8 +67,8 @@ def test_the_build_folder_and_the_question(built):
     jsonschema.validate(info, INFO_SCHEMA)
     assert info["gradingMethod"] == "External"
     docker = (built / "Dockerfile").read_text()
-    wheel = next(built.glob("lagrade-*.whl")).name
-    assert f"COPY {wheel} " in docker and f"COPY lagrade-pl-grade {info['externalGradingOptions']['entrypoint']}" in docker
+    wheel, data_wheel = next(built.glob("lagrade-*.whl")).name, next(built.glob("lagrade_chapter12-*.whl")).name
+    assert f"COPY {wheel} {data_wheel} /tmp/" in docker and f"/tmp/{data_wheel} &&" in docker and f"COPY lagrade-pl-grade {info['externalGradingOptions']['entrypoint']}" in docker
     data = {"params": {}}
     runpy.run_path(str(_question(built) / "server.py"))["generate"](data)
     assert data["params"]["lagrade"]["problem"] == "12.43"

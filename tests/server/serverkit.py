@@ -4,7 +4,9 @@ of its own: tests/bulk has a conftest too, and one name would shadow the other).
 from __future__ import annotations
 
 import re
+import struct
 import tomllib
+import zlib
 from pathlib import Path
 
 import pytest
@@ -59,3 +61,19 @@ def expectations(path: Path) -> dict[str, str]:
 
 def toml_answer(path: Path) -> dict:
     return tomllib.loads(path.read_text(encoding="utf-8"))
+
+
+#: what a PNG needs to be a picture; tEXt, iTXt, zTXt (text) and eXIf would be words and numbers
+PICTURE_CHUNKS = {"IHDR", "PLTE", "IDAT", "IEND", "pHYs", "sRGB", "gAMA", "cHRM", "bKGD", "tRNS"}
+
+
+def png_chunks(data: bytes) -> list[str]:
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+    kinds, at = [], 8
+    while at < len(data):
+        (length,) = struct.unpack(">I", data[at:at + 4])
+        kind = data[at + 4:at + 8].decode("ascii")
+        assert zlib.crc32(data[at + 4:at + 8 + length]) == struct.unpack(">I", data[at + 8 + length:at + 12 + length])[0]
+        kinds.append(kind)
+        at += 12 + length
+    return kinds

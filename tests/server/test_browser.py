@@ -64,3 +64,35 @@ def test_type_preview_submit_and_read_the_verdict(graded, live_url, tmp_path):
             browser.close()
     hosts = {urlparse(u).hostname for u in requests if not u.startswith(("data:", "about:"))}
     assert hosts == {"127.0.0.1"}, hosts
+
+
+def test_a_wrong_motion_shows_its_picture(graded, live_url, tmp_path):
+    """12.14 with a third of the coupling term typed in: the page shows the picture of the two
+    motions, loaded from this server, and its alternative text holds no number."""
+    app = graded[0]
+    token = issue(app.state.server.secret, "browser-plot")
+    wrong = ("(m1 + m2)*l1^2*theta1_d^2/2 + m2*l2^2*theta2_d^2/2 + m2*l1*l2*theta1_d*theta2_d*cos(theta1 - theta2)/3"
+             " + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2)")
+    requests = []
+    with sync_api.sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        try:
+            page = browser.new_page(viewport={"width": 1100, "height": 1400})
+            page.on("request", lambda r: requests.append(r.url))
+            page.goto(f"{live_url}/login?token={token}")
+            page.goto(f"{live_url}/p/12.14")
+            page.fill('input[name="f:L"]', wrong)
+            page.click("#submit")
+            page.locator('#result[data-state="graded"]').wait_for(timeout=120000)
+            img = page.locator("[data-plot] img")
+            img.wait_for(timeout=15000)
+            page.wait_for_function("() => document.querySelector('[data-plot] img').complete", timeout=15000)
+            assert img.evaluate("e => e.naturalWidth") > 300 and img.evaluate("e => e.naturalHeight") > 200
+            assert not any(ch.isdigit() for ch in img.get_attribute("alt"))
+            shot = os.environ.get("LAGRADE_SCREENSHOT_PLOT") or str(tmp_path / "serve-plot.png")
+            page.screenshot(path=shot, full_page=True)
+        finally:
+            browser.close()
+    assert any(u.endswith("/plot.png") for u in requests)
+    hosts = {urlparse(u).hostname for u in requests if not u.startswith(("data:", "about:"))}
+    assert hosts == {"127.0.0.1"}, hosts

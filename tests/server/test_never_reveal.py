@@ -17,7 +17,16 @@ from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
-from serverkit import GOLDEN, PROBLEMS, REPO, bearer, golden, toml_answer
+from serverkit import (
+    GOLDEN,
+    PICTURE_CHUNKS,
+    PROBLEMS,
+    REPO,
+    bearer,
+    golden,
+    png_chunks,
+    toml_answer,
+)
 
 from lagrade.answers.load import load_answer
 from lagrade.library import load_problem
@@ -177,7 +186,13 @@ def test_no_page_reveals_a_reference(graded, pid):
             assert r.status_code == 200 and 'data-state="graded"' in r.text
             assert_hides(pid, page_texts(r.text), f"form {pid} {label}")
     for sid in re.findall(rf'href="/p/{re.escape(pid)}\?attempt=(\d+)"', browser.get(f"/p/{pid}").text):
-        assert_hides(pid, page_texts(browser.get(f"/p/{pid}?attempt={sid}").text), f"attempt {sid}")
+        page = browser.get(f"/p/{pid}?attempt={sid}").text
+        assert_hides(pid, page_texts(page), f"attempt {sid}")
+        if f"/api/v1/submissions/{sid}/plot.png" in page:  # the picture: pixels only (test_attempt_plot.py)
+            png = browser.get(f"/api/v1/submissions/{sid}/plot.png").content
+            assert set(png_chunks(png)) <= PICTURE_CHUNKS
+            flat = squash(png.decode("latin-1"))
+            assert not [r for r in reference_strings(pid) if r in flat], f"picture {sid}"
 
 
 def test_the_walk_finds_a_reference_when_one_is_shown():

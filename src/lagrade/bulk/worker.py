@@ -101,6 +101,15 @@ class Grader:
                     if p.part in loaded.values:
                         row["answer_text"], row["answer_mathml"] = show(loaded.values[p.part])
                     parts.append(row)
+                # the server's page shows `check --plot`'s picture: made here, where the student's equations are
+                picture = None
+                if job.get("plot"):
+                    picture = _picture(result)
+                    if picture is None and any(p.verdict != "correct" for p in result.parts):
+                        # a verdict kept from before carries no motion: grade again, unkept, to draw it
+                        picture = _picture(grade_values(problem, loaded, job["accuracy"], read_as=(),
+                                                        credit=Credit.model_validate(job["credit"])
+                                                        if job.get("credit") else None))
         except GradingOutOfTime as exc:
             return failed_result(job, problem_parts(problem), "grader-timeout", str(exc), time.monotonic() - start)
         finally:
@@ -113,7 +122,7 @@ class Grader:
             "status": _status(reason) if reason else "ok",
             "reason": reason, "score": result.score, "max_score": result.max_score,
             "problems": result.problems, "parts": parts, "seconds": time.monotonic() - start,
-            "jail": self.jail,
+            "jail": self.jail, **({"plot_png": picture} if picture else {}),
         }
 
 
@@ -136,6 +145,17 @@ def _warm_up(problem, memo=None) -> None:
         grade_values(problem, load_answer(answer, problem), read_as=(), memo=memo)
     except Exception:  # noqa: BLE001  (a warm-up that fails only costs speed)
         pass
+
+
+def _picture(result) -> bytes | None:
+    """The PNG of the wrong dynamics parts (:func:`lagrade.plot.plot_png`); None when there is none
+    or it cannot be drawn (a picture that fails costs the student the picture, not the grade)."""
+    from lagrade.plot import plot_png
+
+    try:
+        return plot_png(result)
+    except Exception:  # noqa: BLE001
+        return None
 
 
 def _status(reason: str) -> str:

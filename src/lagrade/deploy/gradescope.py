@@ -1,4 +1,5 @@
-"""The Gradescope autograder zip: ``setup.sh``, ``run_autograder``, a lagrade wheel, the assignment.
+"""The Gradescope autograder zip: ``setup.sh``, ``run_autograder``, the lagrade and problem-data
+wheels, the assignment.
 
 Gradescope unpacks the zip into ``/autograder/source``, runs ``setup.sh`` once as root when it
 builds the image, copies ``run_autograder`` to ``/autograder/run_autograder`` and runs it for each
@@ -21,7 +22,7 @@ import tempfile
 import zipfile
 from pathlib import Path
 
-from lagrade.deploy.wheel import DeployError, build_wheel, check_wheel
+from lagrade.deploy.wheel import DeployError, check_wheel, grader_wheels
 
 SETUP_SH = r"""#!/usr/bin/env bash
 # lagrade's Gradescope setup: run once, as root, when Gradescope builds the autograder image.
@@ -49,7 +50,7 @@ if [ -z "$PY" ]; then
 fi
 "$PY" -m venv "$ROOT/venv"
 "$ROOT/venv/bin/python" -m pip install --quiet --upgrade pip
-"$ROOT/venv/bin/python" -m pip install "$SRC"/lagrade-*.whl
+"$ROOT/venv/bin/python" -m pip install "$SRC"/lagrade-*.whl "$SRC"/lagrade_chapter12-*.whl
 "$ROOT/venv/bin/python" -m lagrade doctor || true   # what the sandbox can use on this image, in the build log
 """
 
@@ -87,7 +88,8 @@ def build_autograder(assignment_path: Path, output: Path, problems_dirs: tuple[P
 
     The assignment is shipped as ``assignment.toml``; extra problem folders go into ``problems/``
     (their ``*.toml``), which ``run_autograder`` passes on with ``--problems``. ``wheel``: an existing
-    lagrade wheel to ship instead of building one."""
+    lagrade wheel to ship instead of building one (the problem data's wheel is taken from beside it,
+    else built)."""
     from lagrade.bulk.assignment import check_against_problems, load_assignment
 
     assignment = load_assignment(assignment_path)
@@ -95,13 +97,14 @@ def build_autograder(assignment_path: Path, output: Path, problems_dirs: tuple[P
     if wheel is not None:
         check_wheel(wheel)
     with tempfile.TemporaryDirectory(prefix="lagrade-gradescope-build-") as tmp:
-        whl = wheel or build_wheel(Path(tmp) / "wheel")
+        wheels = grader_wheels(Path(tmp) / "wheel", wheel)
         output.parent.mkdir(parents=True, exist_ok=True)
         part = output.with_name(output.name + ".part")
         with zipfile.ZipFile(part, "w") as z:
             _add(z, "setup.sh", SETUP_SH.encode(), executable=True)
             _add(z, "run_autograder", RUN_AUTOGRADER.encode(), executable=True)
-            _add(z, whl.name, whl.read_bytes())
+            for whl in wheels:
+                _add(z, whl.name, whl.read_bytes())
             _add(z, "assignment.toml", Path(assignment_path).read_bytes())
             for folder in problems_dirs:
                 for f in sorted(Path(folder).glob("*.toml")):

@@ -1,4 +1,5 @@
-"""The PrairieLearn external grader: a Docker image from the lagrade wheel, its entry point, a question.
+"""The PrairieLearn external grader: a Docker image from the lagrade and problem-data wheels, its
+entry point, a question.
 
 PrairieLearn runs the image's entry point with the job in ``/grade``: ``data/data.json`` (the
 question's ``data``, whose ``params["lagrade"]`` the example ``server.py`` sets: the problem, the
@@ -128,8 +129,8 @@ DOCKERFILE = """# lagrade's PrairieLearn external grader: build with
 #   docker build -t {image} .
 # and set "image" in each question's info.json to the name you push it under.
 FROM python:3.11-slim
-COPY {wheel} /tmp/
-RUN pip install --no-cache-dir /tmp/{wheel} && rm /tmp/{wheel}
+COPY {wheel} {data_wheel} /tmp/
+RUN pip install --no-cache-dir /tmp/{wheel} /tmp/{data_wheel} && rm /tmp/{wheel} /tmp/{data_wheel}
 COPY lagrade-pl-grade {entrypoint}
 RUN chmod 0755 {entrypoint} && python -m lagrade cache build || true
 """
@@ -185,20 +186,24 @@ def build_grader(output: Path, problem_id: str = "12.43", problems_dirs: tuple[P
     (``questions/lagrade-<id>/``) into ``output``; the files written, relative to it."""
     import shutil
 
-    from lagrade.deploy.wheel import build_wheel, check_wheel
+    from lagrade.deploy.wheel import DATA_WHEEL, check_wheel, grader_wheels
 
     if wheel is not None:
         check_wheel(wheel)
     output.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="lagrade-pl-build-") as tmp:
-        whl = wheel or build_wheel(Path(tmp) / "wheel")
-        for old in output.glob("lagrade-*.whl"):
-            old.unlink()
-        shutil.copyfile(whl, output / whl.name)
-    (output / "Dockerfile").write_text(DOCKERFILE.format(image=IMAGE, wheel=whl.name, entrypoint=ENTRYPOINT))
+        engine, data = grader_wheels(Path(tmp) / "wheel", wheel)
+        for old in [*output.glob("lagrade-*.whl"), *output.glob(DATA_WHEEL)]:
+            if old.resolve() not in (engine.resolve(), data.resolve()):
+                old.unlink()
+        for whl in (engine, data):
+            if whl.resolve() != (output / whl.name).resolve():
+                shutil.copyfile(whl, output / whl.name)
+    (output / "Dockerfile").write_text(DOCKERFILE.format(image=IMAGE, wheel=engine.name, data_wheel=data.name,
+                                                         entrypoint=ENTRYPOINT))
     (output / "lagrade-pl-grade").write_text(ENTRY_SCRIPT)
     (output / "lagrade-pl-grade").chmod(0o755)
-    written = [whl.name, "Dockerfile", "lagrade-pl-grade"]
+    written = [engine.name, data.name, "Dockerfile", "lagrade-pl-grade"]
     question = output / "questions" / f"lagrade-{problem_id}"
     question.mkdir(parents=True, exist_ok=True)
     for name, text in question_files(problem_id, problems_dirs).items():

@@ -6,7 +6,7 @@ import asyncio
 from pathlib import Path
 
 from fastapi import APIRouter, HTTPException, Request
-from fastapi.responses import JSONResponse
+from fastapi.responses import JSONResponse, Response
 from pydantic import ValidationError
 
 from lagrade.server.answers import (
@@ -63,16 +63,17 @@ def problem(pid: str, request: Request) -> dict:
 
 @router.post("/problems/{pid}/check", openapi_extra=_CHECK_BODY, status_code=200,
              responses={202: {"description": "stored and queued; poll /api/v1/submissions/{id}"}})
-async def check(pid: str, request: Request) -> JSONResponse:
+async def check(pid: str, request: Request, plot: bool = False) -> JSONResponse:
     """Grade an answer: JSON ``{"answer": {...}}`` (the values answer.toml holds) or an uploaded file.
 
-    Returns what ``lagrade check --json`` prints, plus ``submission_id``."""
+    Returns what ``lagrade check --json`` prints, plus ``submission_id``. ``plot=true``: also draw
+    the picture of a wrong motion (``lagrade check --plot``'s), linked as ``plot`` in the result."""
     server = _server(request)
     who = server.identify(request)
     server.problem(pid)
     suffix, data = await read_answer(request)
     server.require_csrf(who, request.headers.get("x-csrf-token"))
-    return await submit(server, who, pid, suffix, data)
+    return await submit(server, who, pid, suffix, data, plot=plot)
 
 
 async def read_answer(request: Request) -> tuple[str, bytes]:
@@ -100,8 +101,9 @@ async def read_answer(request: Request) -> tuple[str, bytes]:
         raise HTTPException(422, str(exc)) from None
 
 
-async def submit(server, who, pid: str, suffix: str, data: bytes) -> JSONResponse:
-    """Store the attempt (before grading it), queue it, wait for its grade; idempotent per content."""
+async def submit(server, who, pid: str, suffix: str, data: bytes, plot: bool = False) -> JSONResponse:
+    """Store the attempt (before grading it), queue it, wait for its grade; idempotent per content
+    (the same file again is the same attempt, with or without its picture as it was first graded)."""
     from lagrade.bulk.layout import file_hash
 
     server.limit(who)
@@ -109,7 +111,7 @@ async def submit(server, who, pid: str, suffix: str, data: bytes) -> JSONRespons
         server.db.submit, student=who.student, problem=pid, suffix=suffix, data=data, file_hash=file_hash(data),
         grading_hash=server.plan.keys[pid], version=server.plan.version)
     if new and server.queue is not None:
-        server.queue.put(sid)
+        server.queue.put(sid, plot)
     att = await server.queue.wait(sid, server.config.wait_seconds) if server.queue is not None else None
     if att is None or not att.graded:
         return JSONResponse({"submission_id": sid, "state": "queued",
@@ -144,6 +146,25 @@ def submission(sid: int, request: Request) -> JSONResponse:
     if not att.graded:
         return JSONResponse({"submission_id": sid, "state": "queued"}, 202)
     return JSONResponse({**att.result, "submission_id": sid, "state": "graded"})
+
+
+@router.get("/submissions/{sid}/plot.png", response_class=Response,
+            responses={200: {"content": {"image/png": {}}, "description": "the picture"},
+                       404: {"description": "no such attempt of yours, or no picture"}})
+def plot(sid: int, request: Request) -> Response:
+    """The picture of an attempt's wrong dynamics parts: your motion against the true one, as
+    ``lagrade check --plot`` draws it. A PNG, pixels only: no number of the true motion as text."""
+    server = _server(request)
+    who = server.identify(request)
+    att = server.db.attempt(sid)
+    if att is None or (att.student != who.student and not who.instructor):
+        raise HTTPException(404, f"no submission {sid} of yours")
+    png = server.db.plot(sid)
+    if png is None:
+        raise HTTPException(404, f"submission {sid} has no picture (not graded yet, or no dynamics part is wrong)")
+    return Response(png, media_type="image/png", headers={
+        "Cache-Control": "private, max-age=86400", "X-Content-Type-Options": "nosniff",
+        "Content-Security-Policy": "default-src 'none'"})
 
 
 @router.get("/problems/{pid}/submissions")

@@ -11,6 +11,12 @@ file in the folder.
 
 SQLite by default (one file), PostgreSQL by URL (``postgresql+psycopg://...``). Writes go through
 one lock: the server is one process, and SQLite wants one writer.
+
+One server per database (:meth:`Database.claim`): the grading queue and the rate limits live in the
+server's process, so a second server on the same database would grade the same attempts twice and
+double every limit. It is refused in one line; the claim is an OS lock (a POSIX lock on a file next
+to the SQLite file, a session advisory lock on PostgreSQL), so a server killed with ``kill -9``
+leaves nothing to clean up: the next one starts.
 """
 
 from __future__ import annotations
@@ -107,6 +113,24 @@ server_submissions = Table(
 )
 
 
+class DatabaseBusy(RuntimeError):
+    """Another server serves this database already; the message says which and what to do."""
+
+
+#: the PostgreSQL advisory lock a server holds for its whole life (locks are per database): "lgserve1"
+SERVE_LOCK_KEY = int.from_bytes(b"lgserve1", "big") - (1 << 63)
+#: SQLite lock files this process holds (a POSIX lock does not conflict with its own process)
+_CLAIMED: set[str] = set()
+
+#: the picture of a wrong dynamics part (`lagrade check --plot`'s, a PNG), by attempt: apart from the
+#: attempt's row, which every list of attempts reads
+server_plots = Table(
+    "server_plots", metadata,
+    Column("id", Integer, primary_key=True, autoincrement=False), Column("png", LargeBinary, nullable=False),
+    ForeignKeyConstraint(["id"], ["server_submissions.id"], ondelete="CASCADE"),
+)
+
+
 def _now() -> str:
     return time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime()) + "Z"
 
@@ -142,6 +166,7 @@ class Database:
         self.url = database_url(db)
         self.sqlite_path: Path | None = None
         self._write = threading.Lock()
+        self._claim: Any = None  # the lock file (SQLite) or the connection holding the lock (PostgreSQL)
         if self.url.startswith("sqlite:///"):
             from lagrade.bulk.store import Store
 
@@ -149,7 +174,7 @@ class Database:
             Store(self.sqlite_path).close()  # the gradebook schema, exactly as `lagrade grade` makes it
             self.engine: Engine = create_engine(self.url, connect_args={"timeout": 30, "check_same_thread": False})
             event.listen(self.engine, "connect", _sqlite_pragmas)
-            metadata.create_all(self.engine, tables=[server_submissions])
+            metadata.create_all(self.engine, tables=[server_submissions, server_plots])
         else:
             self.engine = create_engine(self.url, pool_pre_ping=True)
             metadata.create_all(self.engine)
@@ -172,7 +197,76 @@ class Database:
                     c.execute(text(f"ALTER TABLE {table} ADD COLUMN {column} {definition}"))
 
     def close(self) -> None:
+        self.release()
         self.engine.dispose()
+
+    # ------------------------------------------------------------------ one server per database
+
+    def claim(self) -> None:
+        """Hold this database for this server until :meth:`close`; DatabaseBusy if another holds it."""
+        if self._claim is not None:
+            return
+        if self.sqlite_path is not None:
+            self._claim_file(self.sqlite_path.with_name(self.sqlite_path.name + ".serve-lock"))
+            return
+        from sqlalchemy import text
+
+        conn = self.engine.connect()
+        try:
+            got = conn.execute(text("SELECT pg_try_advisory_lock(:k)"), {"k": SERVE_LOCK_KEY}).scalar()
+            conn.commit()
+            if not got:
+                holder = conn.execute(text(
+                    "SELECT a.pid, a.client_addr FROM pg_locks l JOIN pg_stat_activity a ON a.pid = l.pid "
+                    "WHERE l.locktype = 'advisory' AND l.granted AND l.database = "
+                    "(SELECT oid FROM pg_database WHERE datname = current_database()) LIMIT 1")).first()
+                conn.rollback()
+                who = f" (PostgreSQL backend {holder[0]}, client {holder[1] or 'local'})" if holder else ""
+                raise DatabaseBusy(self._busy(self.engine.url.render_as_string(hide_password=True), who))
+        except BaseException:
+            conn.invalidate()
+            conn.close()
+            raise
+        self._claim = conn
+
+    def _claim_file(self, lock: Path) -> None:
+        import fcntl
+        import os
+        import socket
+
+        key = str(lock.resolve())
+        fd = os.open(key, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC, 0o600)
+        try:
+            if key in _CLAIMED:
+                raise BlockingIOError
+            fcntl.lockf(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)  # released by the kernel when the process ends
+        except OSError:
+            holder = os.pread(fd, 200, 0).decode("utf-8", "replace").strip()
+            os.close(fd)
+            raise DatabaseBusy(self._busy(str(self.sqlite_path), f" ({holder})" if holder else "")) from None
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, f"pid {os.getpid()} on {socket.gethostname()}".encode(), 0)
+        _CLAIMED.add(key)
+        self._claim = (fd, key)
+
+    @staticmethod
+    def _busy(where: str, who: str) -> str:
+        return (f"{where} is served already by another lagrade serve{who}: one server per database "
+                f"(its queue and rate limits live in that process); stop it, or use another --db")
+
+    def release(self) -> None:
+        claim, self._claim = self._claim, None
+        if claim is None:
+            return
+        if isinstance(claim, tuple):
+            import os
+
+            fd, key = claim
+            _CLAIMED.discard(key)
+            os.close(fd)  # the lock goes with it; the file stays (removing it would race a new claim)
+        else:
+            claim.invalidate()  # the session ends, and its advisory lock with it
+            claim.close()
 
     # ------------------------------------------------------------------ meta
 
@@ -251,6 +345,10 @@ class Database:
             rows = c.execute(q.order_by(server_submissions.c.id.desc()).limit(limit)).fetchall()
         return [_attempt(r) for r in rows]
 
+    def plot(self, sid: int) -> bytes | None:
+        with self.engine.connect() as c:
+            return c.execute(select(server_plots.c.png).where(server_plots.c.id == sid)).scalar_one_or_none()
+
     def queued(self) -> list[int]:
         with self.engine.connect() as c:
             return list(c.execute(select(server_submissions.c.id).where(server_submissions.c.state == "queued")
@@ -261,9 +359,9 @@ class Database:
             rows = c.execute(select(server_submissions.c.state, func.count()).group_by(server_submissions.c.state))
             return {state: n for state, n in rows}
 
-    def finish(self, sid: int, result: dict[str, Any], check: dict[str, Any]) -> None:
-        """Write one attempt's grade: the attempt itself, and the gradebook if it is the student's
-        latest graded attempt at the problem; one transaction."""
+    def finish(self, sid: int, result: dict[str, Any], check: dict[str, Any], plot: bytes | None = None) -> None:
+        """Write one attempt's grade (and its picture): the attempt itself, and the gradebook if it is
+        the student's latest graded attempt at the problem; one transaction."""
         with self._write, self.engine.begin() as c:
             row = c.execute(select(server_submissions).where(server_submissions.c.id == sid)).first()
             if row is None or row.state == "graded":
@@ -271,6 +369,8 @@ class Database:
             now = _now()
             c.execute(update(server_submissions).where(server_submissions.c.id == sid)
                       .values(state="graded", result=json.dumps(check), graded_at=now))
+            if plot:
+                c.execute(insert(server_plots).values(id=sid, png=plot))
             later = c.execute(select(func.max(server_submissions.c.id)).where(
                 server_submissions.c.student == row.student, server_submissions.c.problem == row.problem,
                 server_submissions.c.state == "graded", server_submissions.c.id > sid)).scalar_one_or_none()

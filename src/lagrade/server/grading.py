@@ -6,7 +6,9 @@ the same jobs (:meth:`lagrade.bulk.runner.Plan.job`), with the same deadline and
 when a grader dies or overruns. What differs from :func:`lagrade.bulk.runner.run_local` is only
 that the queue never ends: attempts arrive while the graders work, and the graders stay warm.
 
-A request waits for its attempt's grade on an asyncio future that this thread resolves.
+A request waits for its attempt's grade on an asyncio future that this thread resolves. A grader
+that returns a result takes its next job before the grade is written (``look_after``'s
+``next_job``), so that it works meanwhile.
 """
 
 from __future__ import annotations
@@ -71,7 +73,8 @@ def _read_back(problem, text: str) -> tuple[str | None, str]:
 
     coords = sorted({c.name for s in problem.systems for c in s.coordinates})
     try:
-        value = parse_math(text, coords + [f"p_{c}" for c in coords])
+        general = {f.name: len(f.args) for s in problem.systems for f in s.functions}  # V(r), as the book
+        value = parse_math(text, coords + [f"p_{c}" for c in coords], functions=general)
         return as_latex(value), as_unicode(value)
     except Exception:  # noqa: BLE001  (a value clipped for length, a form the reader does not take)
         return None, text
@@ -87,6 +90,7 @@ class GradingQueue:
         self.db, self.plan, self.workers, self.scheduler = db, p, workers, scheduler
         self.problems = problems or {}
         self._jobs: deque[int] = deque()
+        self._plots: set[int] = set()  # attempts whose picture was asked for (the page's)
         self._lock = threading.Lock()
         self._waiters: dict[int, list[tuple[asyncio.AbstractEventLoop, asyncio.Future]]] = {}
         self._wake_r, self._wake_w = os.pipe()
@@ -104,10 +108,14 @@ class GradingQueue:
         self._thread = threading.Thread(target=target, name="lagrade-grading", daemon=True)
         self._thread.start()
 
-    def put(self, sid: int) -> None:
+    def put(self, sid: int, plot: bool = False) -> None:
+        """Queue a stored attempt; ``plot``: also draw the picture of a wrong motion (it costs 3-5
+        times the grading of a file, so only the page, which shows it, asks for it)."""
         with self._lock:
             if sid not in self._jobs:
                 self._jobs.append(sid)
+            if plot:
+                self._plots.add(sid)
         os.write(self._wake_w, b"x")
 
     def pending(self) -> int:
@@ -157,6 +165,8 @@ class GradingQueue:
         sub = Submission(att.student, att.problem, Path(f"{att.problem}{att.suffix}"), att.file_hash, att.data)
         job = self.plan.job(sub)
         job["server_id"] = sid
+        with self._lock:
+            job["plot"] = sid in self._plots
         return job
 
     def _next(self) -> dict[str, Any] | None:
@@ -176,12 +186,17 @@ class GradingQueue:
     def _done(self, job: dict[str, Any], result: dict[str, Any]) -> None:
         sid = job["server_id"]
         try:
-            self.db.finish(sid, result, check_json(result, self.problems.get(job["problem"])))
+            plot = result.pop("plot_png", None)
+            check = check_json(result, self.problems.get(job["problem"]))
+            if plot:
+                check["plot"] = f"/api/v1/submissions/{sid}/plot.png"
+            self.db.finish(sid, result, check, plot)
             self.graded += 1
         except Exception:
             log.exception("the grade of attempt %s could not be written", sid)
         with self._lock:
             waiters = self._waiters.pop(sid, [])
+            self._plots.discard(sid)
         for loop, fut in waiters:
             loop.call_soon_threadsafe(_resolve, fut)
 
@@ -200,7 +215,7 @@ class GradingQueue:
                 ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=1.0)
                 if self._wake_r in ready:
                     os.read(self._wake_r, 4096)
-                look_after(graders, sources, ready, time.monotonic(), self._done)
+                look_after(graders, sources, ready, time.monotonic(), self._done, self._next)
         except Exception:
             log.exception("the grading thread stopped; queued attempts are graded when the server starts again")
         finally:

@@ -53,8 +53,13 @@ class Server:
         self.plan = make_plan(self.assignment, config.problems_dirs)
         self.problems = {pid: load_problem(pid, config.problems_dirs) for pid in self.assignment.ids}
         self.db = Database(config.db)
-        self.db.setup(self.assignment.canonical_json(), totals(self.plan), self.plan.version, config.roster)
-        self.secret = self.db.secret()
+        try:
+            self.db.claim()  # one server per database: the queue and the rate limits live here
+            self.db.setup(self.assignment.canonical_json(), totals(self.plan), self.plan.version, config.roster)
+            self.secret = self.db.secret()
+        except Exception:
+            self.db.close()
+            raise
         self.roster = set(config.roster) if config.roster is not None else None
         self.check_limit = RateLimit(config.checks_per_minute, config.check_burst)
         self.preview_limit = RateLimit(config.previews_per_minute, config.preview_burst)

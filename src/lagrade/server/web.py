@@ -172,7 +172,7 @@ async def problem_check(pid: str, request: Request):
             ctx["error"] = str(exc)
             return _page(request, "problem.html", ctx, status=422)
     try:
-        response = await submit(server, who, pid, suffix, data)
+        response = await submit(server, who, pid, suffix, data, plot=True)  # the page shows the picture
     except HTTPException as exc:  # a rate limit: said on the page, the typed answer kept
         ctx["error"] = exc.detail
         return _page(request, "problem.html", ctx, status=exc.status_code)
