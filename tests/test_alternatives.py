@@ -275,3 +275,15 @@ def test_a_valid_formulation_loads(tmp_path):
     path = tmp_path / "t1.toml"
     path.write_text(BASE + '[[parts]]\nname = "L"\nkind = "lagrangian"\n[[parts.alternatives]]\nsystem = "b"\n')
     assert load_problem_file(path).parts[0].alternatives[0].system == "b"
+
+
+def test_a_gauge_hamiltonian_keeps_its_floats(tmp_path):
+    """sympy's solve replaced 2.00000002 by 2 (rational=True by default), so 12.47's ground-frame H
+    with a0 off by 1e-8 in its p*t term passed as "another gauge" even under strict."""
+    import lagrade
+
+    path = tmp_path / "answer.toml"
+    path.write_text('H = "(a0*g*m**2*t**2 + 2.00000002*a0*m*p_x*t - 2*g*l0*m**2 - 2*g*m**2*x + k*m*x**2 + p_x**2)'
+                    '/(2*m)"\n')
+    part = next(p for p in lagrade.check("12.47", path, accuracy="strict").parts if p.part == "H")
+    assert part.verdict == "incorrect", part.feedback

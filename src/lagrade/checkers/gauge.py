@@ -16,11 +16,12 @@ import numpy as np
 import sympy as sp
 
 from lagrade.checkers.base import Context, equation_rows, graded, read_expr, read_sympy
+from lagrade.compare.equations import CompiledRows, analyse_rows
 from lagrade.compare.symbolic import _OutOfTime, time_bound
 from lagrade.numeric import agree, evaluate
 from lagrade.reference import Mechanics
 from lagrade.result import PartResult
-from lagrade.sampling import rng_for, sample_points
+from lagrade.sampling import rng_for, sample_points, with_reference_dynamics
 from lagrade.spec import Part
 from lagrade.symbols import T
 
@@ -56,7 +57,9 @@ def _solve(rows: list[sp.Expr], unknowns: list[sp.Symbol], seconds: float) -> li
         return None
     try:
         with time_bound(seconds):
-            sols = sp.solve(rows, unknowns, dict=True)
+            # rational=False: by default solve replaces floats by nearby rationals, and 2.00000002
+            # became 2 (a wrong answer, accepted)
+            sols = sp.solve(rows, unknowns, dict=True, rational=False)
     except _OutOfTime:
         return None
     except Exception:  # noqa: BLE001  (sympy cannot solve it: not an admissible form we can confirm)
@@ -80,7 +83,14 @@ def _judge(ctx: Context, part: Part, mech: Mechanics, f: list[sp.Expr], g: list[
     args = [*q, *v, *a, T, *mech.params, *extra]
     with np.errstate(all="ignore"):
         mine, true = evaluate(rows, args, pts.args(args)), evaluate(mech.EL, args, pts.args(args))
-    same = bool(np.all(np.isfinite(mine)) and np.all(agree(mine, true)))
+    # the same equations, not a multiple (at random accelerations, row by row) ...
+    same = bool(np.all(np.isfinite(mine)) and all(np.all(agree(m_i, t_i)) for m_i, t_i in zip(mine, true)))
+    if same:  # ... holding at the true motion within the preset's tolerance, against their terms' size
+        truth_pts = with_reference_dynamics(mech, pts)
+        state = [*q, *v, T, *mech.params, *extra]
+        an = analyse_rows(CompiledRows(rows, list(a), state), truth_pts.args(state),
+                          np.array(truth_pts.args(a)), list(mech.names), rtol=ctx.accuracy.sample_rtol)
+        same = an.fraction >= 1.0
     if same and not hamiltonian:
         with np.errstate(all="ignore"):
             moms = evaluate(P, args, pts.args(args))  # the phase points of the sampled states
