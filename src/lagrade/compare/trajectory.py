@@ -1,9 +1,12 @@
 """Trajectory evidence: integrate the student's and the reference dynamics side by side.
 
 Both systems start from the same sampled states with the same parameter values; all K
-trajectories are integrated as one batched system by lagrade's own DOP853 (`compare/dop853.py`:
-pure numpy, each trajectory with its own step size), then compared in the tolerance-scaled norm ``|y - y_ref| / (atol + rtol*|y_ref|)``. For a wrong answer the
-comparison says when the motions separate and which coordinate goes wrong first.
+trajectories are integrated as one batched system by lagrade's own DOP853 (`compare/dop853.py`, each
+trajectory with its own step size; for compiled rates the whole step loop runs in machine code,
+`native.py`), then compared in the tolerance-scaled norm ``|y - y_ref| / (atol + rtol*|y_ref|)``. For
+a wrong answer the comparison says when the motions separate and which coordinate goes wrong first;
+inside the window a separation beyond the tolerance is `decisive` and refutes an answer whose sampled
+states agreed (`checkers.dynamics._decide`).
 
 What keeps this honest on hard scenes (measurements and reasons: docs/numerics.md):
 
