@@ -12,7 +12,6 @@ import os
 import signal
 import threading
 import traceback
-import weakref
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -176,10 +175,6 @@ def _ungradable(part, answer: LoadedAnswer) -> PartResult | None:
     return None
 
 
-#: per verdict memo, the formulation each memoized verdict of a followed part was right in (its key's)
-_CHOICES: weakref.WeakKeyDictionary[VerdictMemo, dict] = weakref.WeakKeyDictionary()
-
-
 class Formulations:
     """Which formulation each part was graded in, for one answer: a part with ``alternatives`` (the book
     allows either: a frame, a gauge, planar or 3-D coordinates) is right when it is right in any of them;
@@ -237,22 +232,14 @@ class Formulations:
         key = memo.key(self.ctx, part, value) if memo is not None else None
         if key is not None and part.follows is not None:
             key = (key, self.chosen.get(part.follows))  # the verdict depends on that choice too
-        # a part others follow needs its formulation as well as its verdict: kept beside the memo
-        followed = any(p.follows == part.name for p in self.ctx.problem.parts)
-        choices = _CHOICES.setdefault(memo, {}) if key is not None and followed else None
-        graded_part = memo.get(key) if key is not None and (choices is None or key in choices) else None
-        if graded_part is not None:
-            if choices is not None:
-                self.chosen[part.name] = choices[key]
+        graded_part = memo.get(key) if key is not None else None
+        if graded_part is not None:  # a memoized verdict carries the formulation it was right in
+            self.chosen[part.name] = graded_part._formulation
             return _echo(graded_part, value, read_as)
         graded_part, own, system = self._fresh(part, forms, value)
-        self.chosen[part.name] = system
+        self.chosen[part.name] = graded_part._formulation = system
         if key is not None and own:
             memo.put(key, graded_part)
-            if choices is not None:
-                if len(choices) >= memo.entries:
-                    choices.pop(next(iter(choices)))
-                choices[key] = system
         return _echo(graded_part, value, read_as)
 
     def _fresh(self, part, forms, value) -> tuple[PartResult, bool, str | None]:

@@ -35,6 +35,9 @@ class PartResult(BaseModel):
                                            "serialized, so never in what a student is shown")
     #: how to integrate this part's motion again (student and reference), for pictures; not serialized
     _trajectory: object = PrivateAttr(default=None)
+    #: the system key of the formulation the answer was right in (a part others follow), kept with
+    #: the verdict in the memo; not serialized
+    _formulation: str | None = PrivateAttr(default=None)
 
 
 class CheckResult(BaseModel):
