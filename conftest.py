@@ -23,7 +23,7 @@ SLOW = {
     "tests/test_grading_time_bound.py::test_library_check": "a 2000-branch answer until the bound ends it",
     "tests/test_cache.py::test_warm_check": "cold and warm `lagrade check` processes compared",
     "tests/test_cache.py::test_cache_commands": "`lagrade cache build` of every problem",
-    "tests/test_native.py::test_without_llvmlite": "whole checks again on the numpy path",
+    "tests/test_compile.py::test_without_machine_code": "whole checks again on the numpy path",
     "tests/test_pytest_plugin.py::test_a_course": "a pytest run of its own",
     "tests/answers/*/*_blind_*": "the blind corpus (tests/test_blind_corpus.py checks its labels)",
     "tests/test_verdict_memo.py::test_a_value_graded_again_gets_its_verdict_from_the_memo":
@@ -31,7 +31,7 @@ SLOW = {
     "tests/test_trajectory_refutes.py::test_a_trajectory_beyond_tolerance_refutes": "12.14 graded under four presets",
     "tests/test_trajectory_refutes.py::test_the_right_equations_pass": "12.14 graded under five presets",
     "tests/test_trajectory_refutes.py::test_the_sampled_states_follow_the_preset": "12.14 graded nine times",
-    "tests/test_stages.py::test_the_elimination_in_machine_code_agrees_with_lapack": "a property test of 4 s",
+    "tests/test_compile.py::test_the_elimination_agrees_with_lapack": "a property test of 4 s",
 }
 
 

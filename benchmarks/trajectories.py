@@ -7,15 +7,16 @@ to the ratio. Three comparisons:
 
 1. **Cost per trajectory** (target: batched >= 5x cheaper). lagrade's ``integrate`` on the grader's
    own reference rates (``mech.lagrange_rates``): its batched DOP853, K trajectories stepped together,
-   each with its own step size and error control, the 12 stages of a step in one call of machine code
-   (``lagrade.native.Stages``, where llvmlite is; numpy code otherwise), against the plain way:
-   lambdify the closed-form accelerations once and call ``scipy.integrate.solve_ivp(method="DOP853")``
-   once per trajectory.
+   each with its own step size and error control, each stage one call of the compiled rates
+   (machine code through symengine's LLVM ``Lambdify``, ``lagrade.numeric``; numpy code otherwise),
+   against the plain way: lambdify the closed-form accelerations once and call
+   ``scipy.integrate.solve_ivp(method="DOP853")`` once per trajectory.
 2. **Right-hand side per evaluation** (target: lagrade <= 3x numba). ``mech.accelerations`` (the
-   compiled accelerations: machine code through llvmlite, ``lagrade.native``, or numpy code where
-   llvmlite is missing; the header says which) on a batch of K states against an ``@njit`` loop over the K
-   columns that evaluates the same closed-form accelerations (lambdified with ``cse=True``, compiled
-   by numba once before timing) into a preallocated output.
+   compiled accelerations: machine code through symengine, ``lagrade.numeric.Compiled``, or numpy
+   code where symengine declines or ``LAGRADE_NATIVE=0``; the header says which) on a batch of K
+   states against an ``@njit`` loop over the K columns that evaluates the same closed-form
+   accelerations (lambdified with ``cse=True``, compiled by numba once before timing) into a
+   preallocated output.
 3. **Time to accuracy against PyDy** (target: lagrade needs less time). The same pendulum built with
    ``sympy.physics.mechanics.KanesMethod`` and integrated by ``pydy.system.System.integrate`` (its
    defaults: lambdify code generation, ``scipy.integrate.odeint``/LSODA), one state at a time, against
@@ -56,7 +57,7 @@ from scipy.integrate import solve_ivp
 from lagrade.compare.trajectory import ACCURACY, integrate
 from lagrade.grade import references
 from lagrade.library import load_problem
-from lagrade.native import backend
+from lagrade.numeric import backend
 from lagrade.sampling import rng_for, sample_points, state_arrays
 
 PROBLEM = "12.14"

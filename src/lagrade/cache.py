@@ -16,7 +16,7 @@ file see the cache at all. Entries are also only read from a directory this user
 else can write. An entry's name hashes everything that could change its content: the problem as
 loaded, lagrade's own source files (size and mtime, so an edited checkout never reads a stale entry),
 the versions of Python, sympy and numpy, and the kind of compiled code (machine code through
-llvmlite, or numpy). A corrupt, forged, foreign or unreadable entry is ignored and rebuilt: the cache
+symengine, or numpy). A corrupt, forged, foreign or unreadable entry is ignored and rebuilt: the cache
 can make a check faster, never wrong and never fail.
 ``LAGRADE_CACHE=off`` turns it off; ``LAGRADE_CACHE=DIR`` moves it.
 """
@@ -61,7 +61,7 @@ def code_fingerprint() -> str:
     import numpy as np
     import sympy as sp
 
-    from lagrade.native import backend
+    from lagrade.numeric import backend
 
     versions = f"{__version__} {sys.version} {sp.__version__} {np.__version__} {backend()}"
     h = hashlib.sha256(versions.encode())

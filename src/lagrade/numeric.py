@@ -2,20 +2,28 @@
 
 Evaluating at many random points is the grader's first and cheapest evidence, and the same
 compiled functions drive the trajectory integrations, so every expression is compiled once,
-with common-subexpression elimination, and evaluated on whole arrays of points at a time:
-as machine code where llvmlite is installed (:mod:`lagrade.native`), else as numpy code.
+with common-subexpression elimination, and evaluated on whole arrays of points at a time.
+
+A trajectory run calls its right-hand side about 800 times on a few states, where numpy code pays
+a microsecond of call overhead per operation (27 us a call for a double pendulum's accelerations
+at 4 states). Machine code is made by symengine's LLVM `Lambdify` (`Compiled`): a maintained
+compiler that reads no CPython or numpy internals, 2-3 ms a function and 4 us a call from Python
+(`benchmarks/compilers.py`), that pickles (the disk cache, `lagrade.cache`). Where it declines
+(a function it has no code for, complex values, a NaN rule it does not share with numpy), or
+with ``LAGRADE_NATIVE=0``, numpy code is printed instead (`Generated`): the same numbers, slower.
 Evidence used once is evaluated without compiling (`evaluate`).
 """
 
 from __future__ import annotations
 
+import os
+import pickle
+import threading
 from collections.abc import Callable, Sequence
 
 import numpy as np
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
-
-from lagrade.native import compile_native
 
 Vectorized = Callable[..., np.ndarray]
 
@@ -27,13 +35,34 @@ _COMPILED: dict[tuple, Vectorized] = {}
 _COMPILED_MAX = 256
 
 
+def machine_code() -> bool:
+    """Whether `compile_exprs` makes machine code: symengine importable and ``LAGRADE_NATIVE`` not
+    ``0`` (to prove grades the same without it, or to rule machine code out)."""
+    if os.environ.get("LAGRADE_NATIVE", "1") == "0":
+        return False
+    try:
+        import symengine  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def backend() -> str:
+    """What `compile_exprs` makes here (part of the disk cache's key): ``symengine <version>`` or ``numpy``."""
+    if not machine_code():
+        return "numpy"
+    import symengine
+
+    return f"symengine {symengine.__version__}"
+
+
 def compile_exprs(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
     """``f(*arrays) -> ndarray of shape (len(exprs), K)``, broadcasting constants over the batch.
 
     Memoized: the reference side of a problem compiles the same expressions for every answer, and
-    in a bulk run that is most of the compiling (lambdify costs milliseconds per expression)."""
+    in a bulk run that is most of the compiling (milliseconds per function)."""
     exprs = _defined(exprs)
-    key = (tuple(exprs), tuple(args))
+    key = (tuple(exprs), tuple(args), machine_code())
     hit = _COMPILED.get(key)
     if hit is None:
         hit = _compile(exprs, args)
@@ -52,12 +81,188 @@ def _remember(key: tuple, made: Vectorized) -> None:
 def _compile(exprs: list[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
     if not exprs:
         return _Empty()
-    return compile_native(exprs, args) or compile_numpy(exprs, args)
+    return compile_machine(exprs, args) or compile_numpy(exprs, args)
+
+
+# --------------------------------------------------------------------------- machine code
+
+
+class _Declined(Exception):
+    pass
+
+
+def compile_machine(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Compiled | None:
+    """Machine code for ``exprs`` (not memoized), or None where symengine cannot compile them to
+    what numpy code computes, or machine code is switched off (`machine_code`)."""
+    if not exprs or not args or not machine_code():
+        return None
+    import symengine as se
+
+    # symengine's cse names its temporaries x0, x1, ... and confuses them with arguments of those
+    # names (12.8's x1, x2): the arguments get names it never makes
+    names = [se.Symbol(f"_a{i}") for i in range(len(args))]
+    try:
+        rename = dict(zip((se.sympify(a) for a in args), names))
+        forms = [_llvm_form(se.sympify(_real(e)).xreplace(rename)) if e.has(*_REWRITTEN)
+                 else se.sympify(_real(e)).xreplace(rename) for e in _defined(exprs)]
+        # -O0: 1.4-2.2 ms a compile instead of 4 at -O3, for calls under 0.15 us slower at 4-64 states
+        # (12.14's and 12.37's accelerations): a student's equations are compiled once for ~800 calls
+        f = se.Lambdify(names, forms, backend="llvm", cse=True, real=True, opt_level=0)
+        # a function just compiled keeps its LLVM module and optimiser, about 460 kB; loaded from its
+        # object code, about 10 kB (measured over 200): 0.1 ms here keeps a bulk run's memo small
+        f = pickle.loads(pickle.dumps(f))
+    except Exception:  # noqa: BLE001  (conversion or code generation declined: numpy code, same numbers)
+        return None
+    return Compiled(f, len(forms), len(args))
+
+
+#: what `_llvm_form` rewrites (the others are left as they are, without walking them in Python)
+_REWRITTEN = (sp.sign, sp.Max, sp.Min, sp.Piecewise, sp.Heaviside)
+
+
+def _real(e: sp.Expr) -> sp.Expr:
+    """``e`` for symengine: real, Heaviside as the Piecewise numpy code evaluates (symengine has none)."""
+    if not isinstance(e, sp.Expr) or e.has(sp.I):
+        raise _Declined("complex values: numpy code takes the real part at the end")
+    return e.replace(sp.Heaviside, lambda *a: sp.Heaviside(*a).rewrite(sp.Piecewise)) if e.has(sp.Heaviside) else e
+
+
+def _llvm_form(e):
+    """A symengine expression with numpy's NaN rules spelled out where symengine's code differs:
+    sign, Max and Min of NaN are NaN, ``!=`` with NaN holds, a Piecewise no branch of which holds
+    is NaN. Conditions become nested Piecewise on ordered comparisons, the one kind both share."""
+    import symengine as se
+
+    memo: dict = {}
+
+    def choose(cond, then, other):
+        """``then`` where ``cond`` holds as numpy evaluates it, else ``other``."""
+        kind = type(cond).__name__
+        if kind == "BooleanTrue":
+            return then
+        if kind == "BooleanFalse":
+            return other
+        if kind == "Unequality":
+            return se.Piecewise((other, se.Eq(*cond.args)), (then, True))
+        if kind == "Not":
+            return choose(cond.args[0], other, then)
+        if kind == "And":
+            first, *rest = cond.args
+            return choose(first, choose(se.And(*rest), then, other) if rest else then, other)
+        if kind == "Or":
+            first, *rest = cond.args
+            return choose(first, then, choose(se.Or(*rest), then, other) if rest else other)
+        if kind in ("Equality", "LessThan", "StrictLessThan"):
+            return se.Piecewise((then, cond), (other, True))
+        raise _Declined(kind)
+
+    def walk(e):
+        hit = memo.get(e)
+        if hit is not None:
+            return hit
+        args = e.args
+        new = [walk(a) for a in args]
+        kind = type(e).__name__
+        if kind == "sign":
+            x = new[0]
+            r = se.Piecewise((1, x > 0), (-1, x < 0), (0, se.Eq(x, 0)), (se.nan, True))
+        elif kind in ("Max", "Min"):  # x_i where it is >= (<=) every other: no branch holds for NaN
+            r = se.nan
+            for i, x in reversed(list(enumerate(new))):
+                r = choose(se.And(*[x >= y if kind == "Max" else x <= y for j, y in enumerate(new) if j != i]), x, r)
+        elif kind == "Piecewise":
+            r = se.nan
+            for value, cond in reversed(list(zip(new[::2], new[1::2]))):
+                r = choose(cond, value, r)
+        elif all(a is b for a, b in zip(args, new)):
+            r = e
+        else:  # relations and connectives have no ``func`` in symengine
+            make = {"Equality": se.Eq, "Unequality": se.Ne, "LessThan": se.Le, "StrictLessThan": se.Lt,
+                    "And": se.And, "Or": se.Or, "Not": se.Not}.get(kind)
+            r = make(*new) if make else e.func(*new)
+        memo[e] = r
+        return r
+
+    return walk(e)
+
+
+def is_machine_code(f: object) -> bool:
+    """Whether ``f`` (made by `compile_exprs` or `compile_linear_solve`) runs machine code."""
+    return isinstance(getattr(f, "both", f), Compiled)
+
+
+class Compiled:
+    """Machine code with the calling convention of `Generated`: ``f(*arrays) -> ndarray (count,
+    *shape)``, arrays and numbers broadcasting together; ``blocks`` takes blocks of rows.
+
+    The code is called on one contiguous buffer of points (a row of arguments per point) through
+    symengine's ``unsafe_eval``, which trusts the sizes: they are checked here. It pickles as
+    symengine's object code, and its machine code goes with its last reference."""
+
+    __slots__ = ("_scratch", "count", "f", "nargs")
+
+    def __init__(self, f, count: int, nargs: int):
+        self.f, self.count, self.nargs = f, count, nargs
+        self._scratch = threading.local()  # per thread: the buffers of `blocks`, kept between calls
+
+    def __reduce__(self):
+        return Compiled, (self.f, self.count, self.nargs)
+
+    def __call__(self, *arrays: np.ndarray) -> np.ndarray:
+        if len(arrays) != self.nargs:
+            raise ValueError(f"{len(arrays)} arguments given, {self.nargs} expected")
+        shape = ()
+        for a in arrays:  # the common case (equal shapes and numbers) without numpy's broadcast
+            s = getattr(a, "shape", ())
+            if s and s != shape:
+                if shape:
+                    shape = np.broadcast(*arrays).shape
+                    break
+                shape = s
+        src = np.empty((*shape, self.nargs))
+        for i, a in enumerate(arrays):
+            src[..., i] = a
+        return self._run(src, shape)
+
+    def blocks(self, *blocks: np.ndarray) -> np.ndarray:
+        """The same, the arguments given as blocks of consecutive rows, each ``(rows, K)`` or
+        ``(rows, 1)``: q, q', t and the parameters of a batch, each copied once."""
+        K, rows, equal = blocks[0].shape[1], 0, True
+        for b in blocks:
+            rows += b.shape[0]
+            if b.shape[1] != K:
+                K, equal = max(K, b.shape[1]), False
+        if rows != self.nargs:
+            raise ValueError(f"{rows} arguments given in blocks, {self.nargs} expected")
+        # the integrator's calls: buffers kept from call to call and one numpy call to fill them
+        # (about a quarter of a call's 5 us: 12.14 at K = 4 and 64)
+        kept = getattr(self._scratch, "kept", None)
+        if kept is None or kept[0] != K:
+            src, out = np.empty((K, self.nargs)), np.empty((K, self.count))
+            kept = self._scratch.kept = (K, src, out, src.reshape(-1), out.reshape(-1))
+        _, src, out, src_flat, out_flat = kept
+        if equal:
+            np.concatenate([b.T for b in blocks], axis=1, out=src)
+        else:
+            row = 0
+            for b in blocks:
+                end = row + b.shape[0]
+                src[:, row:end] = b.T  # a (rows, 1) block broadcasts over the columns
+                row = end
+        self.f.unsafe_eval(src_flat, out_flat, K)
+        return out.T.copy()  # the caller's own: the buffers serve the next call
+
+    def _run(self, src: np.ndarray, shape: tuple) -> np.ndarray:
+        size = src.size // self.nargs
+        out = np.empty((size, self.count))
+        if size:
+            self.f.unsafe_eval(src.reshape(-1), out.reshape(-1), size)
+        return np.ascontiguousarray(out.T).reshape((self.count, *shape))
 
 
 def compile_numpy(exprs: Sequence[sp.Expr], args: Sequence[sp.Symbol]) -> Vectorized:
-    """The numpy form of `compile_exprs` (not memoized): where llvmlite is missing or cannot write
-    an expression (complex intermediates, functions outside its vocabulary)."""
+    """The numpy form of `compile_exprs` (not memoized): where machine code is switched off or
+    declines an expression (complex intermediates, functions outside symengine's vocabulary)."""
     exprs = _defined(exprs)
     try:
         return Generated(_generate(exprs, args), len(exprs))
@@ -70,8 +275,8 @@ def call_blocks(f: Vectorized, *blocks: np.ndarray) -> np.ndarray:
     or ``(rows, 1)`` for a constant per row: a right-hand side's q, q', t and parameters.
 
     Unpacking a batch into one array per argument costs a few microseconds per call, as much as
-    machine code takes for the whole right-hand side; `lagrade.native.Native.blocks` copies each
-    block once instead."""
+    machine code takes for the whole right-hand side; `Compiled.blocks` copies each block once
+    into the one buffer its code reads instead."""
     fast = getattr(f, "blocks", None)
     if fast is not None:
         return fast(*blocks)
@@ -253,8 +458,8 @@ def compile_linear_solve(A: Sequence[Sequence[sp.Expr]], b: Sequence[sp.Expr], a
 
     Up to two unknowns the solution is written out (Cramer's rule, the determinant shared by CSE):
     one compiled call per evaluation and no LAPACK call, which is most of a 1- or 2-DOF right-hand
-    side. Larger systems: in machine code, A and b and then the elimination in the same function
-    (`lagrade.native`); in numpy code, A and b in one compiled call, then batched LU (`solve_batch`)."""
+    side. Larger systems: A and b in one compiled call, then batched LU (`solve_batch`): written out,
+    the elimination grows as n^3 in the compiled code, and LAPACK's loop is already machine code."""
     n = len(b)
     if n == 1:
         return compile_exprs([sp.sympify(b[0]) / A[0][0]], args)
@@ -263,10 +468,10 @@ def compile_linear_solve(A: Sequence[Sequence[sp.Expr]], b: Sequence[sp.Expr], a
         det = a * e - c * d
         return compile_exprs([(e * b[0] - c * b[1]) / det, (a * b[1] - d * b[0]) / det], args)
     entries = _defined([*(x for row in A for x in row), *b])
-    key = (tuple(entries), tuple(args), "solve")
+    key = (tuple(entries), tuple(args), machine_code(), "solve")
     hit = _COMPILED.get(key)
     if hit is None:
-        hit = compile_native(entries, args, solve=n) or _LinearSolve(compile_exprs(entries, args), n)
+        hit = _LinearSolve(compile_exprs(entries, args), n)
         _remember(key, hit)
     return hit
 
@@ -276,7 +481,12 @@ class _LinearSolve:
         self.both, self.n = both, n
 
     def __call__(self, *arrays: np.ndarray) -> np.ndarray:
-        out = self.both(*arrays)
+        return self._solved(self.both(*arrays))
+
+    def blocks(self, *blocks: np.ndarray) -> np.ndarray:
+        return self._solved(call_blocks(self.both, *blocks))
+
+    def _solved(self, out: np.ndarray) -> np.ndarray:
         n, K = self.n, out.shape[1]
         return solve_batch(out[:n * n].reshape(n, n, K), out[n * n:])
 
@@ -317,3 +527,55 @@ def solve_batch(M: np.ndarray, f: np.ndarray) -> np.ndarray:
                 except np.linalg.LinAlgError:
                     pass
             return out
+
+
+# --------------------------------------------------------------------------- right-hand sides
+
+
+class CompiledRates:
+    """Rates ``(t, Y (dim, K)) -> (dim, K)`` from ``f`` of the rows [Y, t, constants].
+
+    A trajectory run evaluates its rates about 800 times; kept as data (one compiled function of
+    the argument rows) rather than a closure, a call is one `call_blocks` and the integrator can
+    double the batch (`pair`). ``copied``: the first ``copied`` rates are the state rows
+    ``copied .. 2 copied - 1`` as they are (q' = q-dot of a second-order system, whose ``f`` gives
+    the accelerations only); ``f`` writes the other ``dim - copied``. ``constants``: (C, K) per
+    trajectory, or (C, 1) shared; they are the parameters (and a part's extra symbols) of each
+    sampled state.
+    """
+
+    __slots__ = ("_kept", "constants", "copied", "dim", "f")
+
+    def __init__(self, f: Vectorized, dim: int, constants: np.ndarray, copied: int = 0):
+        self.f, self.dim, self.copied = f, dim, copied
+        values = np.asarray(constants, dtype=float)
+        self.constants = np.ascontiguousarray(values[:, None] if values.ndim == 1 else values)
+        self._kept = threading.local()
+
+    def __call__(self, t: float | np.ndarray, Y: np.ndarray) -> np.ndarray:
+        if not isinstance(self.f, Compiled):
+            body = call_blocks(self.f, Y, as_row(t), self.constants)
+            c = self.copied
+            return np.concatenate([Y[c:2 * c], body]) if c else body
+        # Machine code: the points' rows are written into a buffer that already holds the constants
+        # (kept per thread and batch size), so a call is two copies in, the code, and one out: half
+        # the cost of `call_blocks` for the integrator's 800 calls a run (docs/performance.md).
+        dim, c, K = self.dim, self.copied, Y.shape[1]
+        kept = getattr(self._kept, "buffers", None)
+        if kept is None or kept[0] != K:
+            src, out = np.empty((K, self.f.nargs)), np.empty((K, self.f.count))
+            src[:, dim + 1:] = self.constants.T
+            kept = self._kept.buffers = (K, src.reshape(-1), out.reshape(-1), src[:, :dim], src[:, dim], out.T)
+        _, src, out, state, time, body = kept
+        state[...] = Y.T
+        time[...] = t
+        self.f.f.unsafe_eval(src, out, K)
+        result = np.empty((dim, K))
+        result[:c] = Y[c:2 * c]
+        result[c:] = body
+        return result
+
+    def pair(self) -> CompiledRates:
+        """The same rates for a batch of twice the columns: each state and a displaced copy of it."""
+        return CompiledRates(self.f, self.dim, np.concatenate([self.constants, self.constants], axis=1)
+                             if self.constants.shape[1] > 1 else self.constants, self.copied)

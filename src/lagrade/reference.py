@@ -14,10 +14,10 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from lagrade.compare.rates import CompiledRates
 from lagrade.general_functions import arities, random_function, substitute
 from lagrade.notation import parse_math
 from lagrade.numeric import (
+    CompiledRates,
     Vectorized,
     as_row,
     call_blocks,
@@ -190,7 +190,7 @@ class Mechanics:
 
     def lagrange_rates(self, params: np.ndarray) -> CompiledRates:
         """(q', q'') of the states (q, q') of a batch whose parameters are ``params`` (P, K): the right-hand
-        side of the reference motion, one compiled call (machine-code stages where llvmlite is)."""
+        side of the reference motion, one compiled call (machine code where symengine compiles it)."""
         n = len(self.s.q)
         return CompiledRates(self._accelerations_f, 2 * n, params, copied=n)
 

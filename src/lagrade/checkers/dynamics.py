@@ -25,10 +25,9 @@ from lagrade.checkers.base import (
     read_sympy,
 )
 from lagrade.compare.equations import CompiledRows, analyse_rows
-from lagrade.compare.rates import CompiledRates
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs
-from lagrade.numeric import Vectorized, agree, compile_exprs, evaluate, scale_of
+from lagrade.numeric import CompiledRates, Vectorized, agree, compile_exprs, evaluate, scale_of
 from lagrade.reference import Mechanics, split_energy
 from lagrade.result import PartResult
 from lagrade.sampling import (

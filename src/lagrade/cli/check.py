@@ -73,9 +73,6 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
             refs[system.key]
     except SceneError as exc:  # the problem file's fault, not the answer's: its file and line
         fail(scene_message(p, exc, problems_dir), as_json)
-    from lagrade.native import available
-
-    available()  # loads LLVM (about 20 ms) now rather than when the answer's equations are compiled
     if not as_json:
         import rich.console  # noqa: F401
     loaded = finish_loading()

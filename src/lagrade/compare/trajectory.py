@@ -1,9 +1,9 @@
 """Trajectory evidence: integrate the student's and the reference dynamics side by side.
 
 Both systems start from the same sampled states with the same parameter values; all K
-trajectories are integrated as one batched system by lagrade's own DOP853 (`compare/dop853.py`, each
-trajectory with its own step size; for compiled rates the whole step loop runs in machine code,
-`native.py`), then compared in the tolerance-scaled norm ``|y - y_ref| / (atol + rtol*|y_ref|)``. For
+trajectories are integrated together by lagrade's DOP853 (`compare/dop853.py`: each trajectory with
+its own step size, error control and events, the K of them stepped as the columns of one array), then
+compared in the tolerance-scaled norm ``|y - y_ref| / (atol + rtol*|y_ref|)``. For
 a wrong answer the comparison says when the motions separate and which coordinate goes wrong first;
 inside the window a separation beyond the tolerance is `decisive` and refutes an answer whose sampled
 states agreed (`checkers.dynamics._decide`).
@@ -27,7 +27,7 @@ What keeps this honest on hard scenes (measurements and reasons: docs/numerics.m
   rejected by amplified rounding; a wrong answer still separates at once.
 - **events**: `integrate` takes batched event functions; each trajectory stops (is frozen) at its own
   event (contact loss) while the others go on; with switching events (sign change of a friction
-  force) the batch shares one step and restarts on the new branch, in segments.
+  force) that trajectory goes on from the root on its new branch.
 - **singularities**: if the rates of a trajectory grow a millionfold (a coordinate singularity such as
   theta -> 0 of a spherical pendulum, or a collision), the run stops and says where, instead of
   returning a silently wrong motion.
@@ -35,7 +35,6 @@ What keeps this honest on hard scenes (measurements and reasons: docs/numerics.m
 
 from __future__ import annotations
 
-import math
 import os
 import time
 from collections.abc import Callable, Sequence
@@ -43,9 +42,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from lagrade import native
-from lagrade.compare.dop853 import LOOP_SINGULAR, LOOP_TOO_MANY, ColumnEvent, Event, dop853, dop853_columns
-from lagrade.compare.rates import CompiledRates
+from lagrade.compare import dop853
+from lagrade.compare.dop853 import ColumnEvent
+from lagrade.numeric import CompiledRates
 
 #: (t, y of shape (dim, K)) -> (dim, K); t is one time for the batch, or (K,) times, one per trajectory
 #: (the DOP853 path steps each trajectory with its own step size)
@@ -264,79 +263,35 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
     limit: np.ndarray | None = None   # per trajectory: rates beyond this mean a singularity
     lowest = np.inf                  # the smallest of them: one comparison per call in the common case
 
-    def fun(t: float, flat: np.ndarray) -> np.ndarray:
+    def watch(t: float | np.ndarray, out: np.ndarray) -> None:
+        """The singularity guard: rates of a living trajectory a millionfold their first size."""
+        nonlocal limit, lowest
+        if not guard:
+            return
+        if limit is None:
+            limit = SINGULAR_GROWTH * (1.0 + np.abs(out).max(axis=0))
+            lowest = float(limit.min())
+        elif np.abs(out).max() > lowest:  # one reduction per call; per trajectory only then
+            size = np.abs(out).max(axis=0) * alive
+            if np.any(size > limit):
+                k = int(np.argmax(size / limit))
+                raise _Singular(float(np.max(t)) if np.ndim(t) else t, k, float(size[k] / limit[k] * SINGULAR_GROWTH))
+
+    def fun(t: float | np.ndarray, Y: np.ndarray) -> np.ndarray:
         # called hundreds of times per run on a few dozen numbers: every numpy call here counts
         # (floating-point warnings are silenced once around the whole integration, not per call)
-        nonlocal count, limit, lowest
+        nonlocal count
         count += 1
         if count > acc.max_rhs_evals:
             raise _TooManyEvaluations
-        out = np.asarray(rates(t, flat.reshape(dim, K)), dtype=float).reshape(dim, K)
-        if stopped:
-            out = out * alive
-        if guard:
-            if limit is None:
-                limit = SINGULAR_GROWTH * (1.0 + np.abs(out).max(axis=0))
-                lowest = float(limit.min())
-            elif np.abs(out).max() > lowest:  # one reduction per call; per trajectory only then
-                size = np.abs(out).max(axis=0)
-                if np.any(size > limit):
-                    k = int(np.argmax(size / limit))
-                    raise _Singular(float(np.max(t)) if np.ndim(t) else t, k,
-                                    float(size[k] / limit[k] * SINGULAR_GROWTH))
+        out = rates(t, Y)
+        return out * alive if stopped else out
+
+    def flat_fun(t: float, flat: np.ndarray) -> np.ndarray:
+        """`fun` as solve_ivp calls it: one flat state, the guard at every call."""
+        out = np.asarray(fun(t, flat.reshape(dim, K)), dtype=float).reshape(dim, K)
+        watch(t, out)
         return out.reshape(-1)
-
-    def machine_stages(hook, Z: np.ndarray, T: np.ndarray, h: np.ndarray, coef: np.ndarray):
-        """The rates' own machine code for DOP853's stages, with `fun`'s count and singularity guard."""
-        made = hook(Z, T, h, coef)
-        if made is None:
-            return None
-        run, state, out, amax, bind_columns = made
-
-        def stages(s0: int, s1: int) -> None:
-            nonlocal count
-            count += s1 - s0
-            if count > acc.max_rhs_evals:
-                raise _TooManyEvaluations
-            run(s0, s1)
-            # (limit is set: the integrator's first call of fun comes first)
-            if guard and amax.max() > lowest:
-                size = amax * alive if stopped else amax
-                if np.any(size > limit):
-                    k = int(np.argmax(size / limit))
-                    t_k = float(np.max(T[s0:s1, k]))
-                    raise _Singular(t_k, k, float(size[k] / limit[k] * SINGULAR_GROWTH))
-
-        def columns(buffers: dict[str, np.ndarray]):
-            """The integrator's whole loop in machine code, with the same count and guard; not once a
-            trajectory has stopped, since `fun` masks those and the machine code would not."""
-            loop = None if stopped else bind_columns(buffers)
-            if loop is None:
-                return None
-            ints = np.zeros(len(native.COLUMN_INTS), dtype=np.int64)
-            reals = np.zeros(len(native.COLUMN_REALS))
-
-            def run_loop(nfev: int, nfev_limit: int, t_end: float, rtol: float, a_r: float) -> tuple[int, int, int]:
-                nonlocal count
-                at = native.COLUMN_INTS.index
-                ints[at("max_count")], ints[at("nfev_limit")], ints[at("guard")] = acc.max_rhs_evals, nfev_limit, guard
-                ints[at("count")], ints[at("nfev")] = count, nfev
-                reals[:] = (t_end, rtol, a_r, lowest if guard else math.inf)
-                buffers["limit"][:] = limit if guard else math.inf
-                status = loop(ints, reals)
-                count = int(ints[at("count")])
-                k = int(ints[at("column")])
-                if status == LOOP_TOO_MANY:
-                    raise _TooManyEvaluations
-                if status == LOOP_SINGULAR:
-                    s0, s1 = int(ints[at("s0")]), int(ints[at("s1")])
-                    raise _Singular(float(np.max(T[s0:s1, k])), k,
-                                    float(amax[k] / buffers["limit"][k] * SINGULAR_GROWTH))
-                return status, k, int(ints[at("nfev")])
-
-            return run_loop
-
-        return stages, state, out, columns
 
     jac_fn = None
     if (jac if jac is not None else method in ("Radau", "BDF", "LSODA")):
@@ -381,36 +336,32 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
                 out.append(g)
         return out
 
-    def watched() -> list[tuple[BatchedEvent, np.ndarray]]:
-        """Each event with the trajectories it watches now (alive, and active for it)."""
-        out = []
-        for ev in events:
-            act = alive & (ev.active() if ev.active is not None else True)
-            if act.any():
-                out.append((ev, act))
-        return out
-
     def columns(t0: float, y: np.ndarray, times: np.ndarray):
         """The whole horizon in one call, each trajectory with its own time and step (compare/dop853.py):
-        the batch costs about what its hardest trajectory costs alone. Stop events freeze their
-        trajectory where they fire; nothing restarts."""
+        the batch costs about what its hardest trajectory costs alone. A stop event freezes its
+        trajectory where it fires; a switching event changes that trajectory's branch and it goes on
+        from there on its own, while the others go on undisturbed."""
         nonlocal stopped
 
-        def stop(ev: BatchedEvent):
+        def handler(ev: BatchedEvent):
             def on_event(k: int, t: float, yk: np.ndarray) -> bool:
                 nonlocal stopped
                 found[ev.name].append((k, float(t), np.array(yk, dtype=float)))
-                alive[k] = False
-                stopped = True
-                t_stop[k] = t
-                return True
+                if ev.action == "stop":
+                    alive[k] = False
+                    stopped = True
+                    t_stop[k] = t
+                    return True
+                if ev.on_event is not None:
+                    ev.on_event(k, float(t), np.array(yk, dtype=float))
+                return False
             return on_event
 
-        evs = [ColumnEvent(ev.fn, ev.direction, act, stop(ev)) for ev, act in watched()]
-        hook = getattr(rates, "stages", None)
-        res = dop853_columns(lambda t, Y: fun(t, Y.reshape(-1)).reshape(dim, K), t0, y.reshape(dim, K), horizon,
-                             rtol=acc.rtol, atol=acc.atol, t_eval=times, events=evs,
-                             stages=(lambda *buffers: machine_stages(hook, *buffers)) if hook else None)
+        # every event, even one no trajectory watches yet: the watched ones are read at every step,
+        # since a switch may change them (breakaway is watched only once something sticks)
+        evs = [ColumnEvent(ev.fn, ev.direction, _Watch(ev, alive), handler(ev)) for ev in events]
+        res = dop853.solve(fun, t0, y.reshape(dim, K), horizon, rtol=acc.rtol, atol=acc.atol, t_eval=times,
+                           events=evs, watch=watch)
         if res.status == -1:
             raise _Failed(res.message, res.t_failed if res.t_failed is not None else t0)
         return res.t, res.y.reshape(dim * K, -1), None
@@ -418,23 +369,14 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
     def segment(t0: float, y: np.ndarray, times: np.ndarray):
         """One stretch up to the horizon or the first event: (t, y (dim*K, nt), hit), where hit is None
         or (t, y, [(event, trajectory), ...]) for the first crossing and any simultaneous ones."""
-        if method == "DOP853" and all(ev.action == "stop" for ev in events):
+        if method == "DOP853":
             return columns(t0, y, times)
-        if method == "DOP853":  # switching events: one shared step, the batch restarts at each switch
-            evs = [(ev, Event(ev.fn, ev.direction, act)) for ev, act in watched()]
-            res = dop853(lambda t, Y: fun(t, Y.reshape(-1)).reshape(dim, K), t0, y.reshape(dim, K), horizon,
-                         rtol=acc.rtol, atol=acc.atol, t_eval=times, events=[e for _, e in evs])
-            if res.status == -1:
-                raise _Failed(res.message, res.t[-1] if res.t.size else t0)
-            hit = None
-            if res.status == 1:
-                fired = [(evs[i][0], c) for i, c in [(res.event_index, res.event_column), *res.also]]
-                hit = (res.t_event, res.y_event.reshape(-1), fired)
-            return res.t, res.y.reshape(dim * K, -1), hit
-        from scipy.integrate import solve_ivp  # implicit methods for stiff scenes only: 0.2 s to import
+        from scipy.integrate import (
+            solve_ivp,  # implicit methods for stiff scenes only: 0.2 s to import
+        )
 
         evs = scalar_events()
-        sol = solve_ivp(fun, (t0, horizon), y, method=method, t_eval=times, rtol=acc.rtol,
+        sol = solve_ivp(flat_fun, (t0, horizon), y, method=method, t_eval=times, rtol=acc.rtol,
                         atol=acc.atol, events=evs or None, **({"jac": jac_fn} if jac_fn else {}))
         if sol.status == -1:
             raise _Failed(sol.message, sol.t[-1] if sol.t.size else t0)
@@ -501,6 +443,18 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
             raise
         return Run(t_eval[:1], y0[..., None], False, f"integration failed ({exc})", count,
                    time.perf_counter() - start, method, t_stop, found, stiff, horizon, note, segments)
+
+
+class _Watch:
+    """Which trajectories an event watches, read by the integrator at every step: alive ones, and of
+    those the ones its ``active`` says (a branch change may change them)."""
+
+    def __init__(self, ev: BatchedEvent, alive: np.ndarray):
+        self.ev, self.alive = ev, alive
+
+    def __array__(self, dtype=None, copy=None):
+        act = self.alive & (self.ev.active() if self.ev.active is not None else True)
+        return np.asarray(act, dtype=dtype)
 
 
 class _Failed(Exception):
@@ -605,11 +559,14 @@ def _displaced(y0: np.ndarray, seed: int = 12) -> np.ndarray:
 
 def compare_runs(student: Rates, reference: Rates, y0: np.ndarray, labels: list[str], horizon: float,
                  acc: Accuracy, *, chaos: bool | None = None, events: Sequence[BatchedEvent] = (),
-                 reference_key: object = None, store: dict | None = None) -> Comparison:
+                 student_events: Sequence[BatchedEvent] | None = None, reference_key: object = None,
+                 store: dict | None = None) -> Comparison:
     """Integrate both from ``y0`` and compare; ``labels`` names each state component.
 
     ``chaos``: measure the amplification of small displacements along the reference and compare only
     where it keeps correct integrations within tolerance (None: when the phase space allows chaos).
+    ``events`` watch the reference run; ``student_events`` the student's (None: the same ones): a
+    switching model's events change that model's branches, so each run needs its own.
     ``reference_key`` and ``store``: the reference integration is made once per key and kept in
     ``store`` (the reference system's own, which the disk cache keeps): every answer to a problem is
     compared with the same reference motion.
@@ -621,7 +578,8 @@ def compare_runs(student: Rates, reference: Rates, y0: np.ndarray, labels: list[
         ref, method, window, why, amp = _reference_run(reference, y0, horizon, acc, chaos, events)
         if key is not None:
             store[key] = (ref, method, window, why, amp)
-    return _compare_to_reference(student, ref, y0, labels, horizon, acc, method, window, why, amp, events)
+    return _compare_to_reference(student, ref, y0, labels, horizon, acc, method, window, why, amp,
+                                 events if student_events is None else student_events)
 
 
 def _paired(reference: Rates, K: int) -> Rates:

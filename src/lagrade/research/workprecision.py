@@ -3,7 +3,7 @@
 The question it answers is the grader's own: what does a tighter preset buy, and what would another
 integrator cost for the same error? So the series that matters is the grading path itself, timed on
 the same objects grading uses: the reference rates ``Mechanics.lagrange_rates(params)`` (a
-`CompiledRates`, machine-code stages where llvmlite is) integrated by
+`CompiledRates`, machine code where symengine compiles the rates) integrated by
 `lagrade.compare.trajectory.integrate` with an `Accuracy` preset (method "auto" resolved as
 `compare_runs` resolves it, 201 sample times as grading compares at) over K sampled states in one batch.
 
@@ -45,7 +45,7 @@ from lagrade.compare.trajectory import (
     stiff_method,
 )
 from lagrade.library import load_problem
-from lagrade.native import Native
+from lagrade.numeric import is_machine_code
 from lagrade.reference import Mechanics
 from lagrade.sampling import rng_for, sample_points, state_arrays
 
@@ -62,7 +62,7 @@ CHECK_METHOD = "DOP853"
 
 LABELS = {
     "grading": "lagrade (grading path, DOP853 compiled)",
-    #: the grading path where llvmlite cannot compile the rates (or LAGRADE_NATIVE=0): said, not hidden
+    #: the grading path where symengine cannot compile the rates (or LAGRADE_NATIVE=0): said, not hidden
     "grading-numpy": "lagrade (grading path, DOP853 numpy stages: rates not compiled)",
     "numpy": "lagrade DOP853, numpy stages (not the grading path)",
     "symplectic": "symplectic order 4, fixed step (numpy)",
@@ -238,13 +238,13 @@ def grading_method(sc: Scene, acc: Accuracy) -> str:
 
 
 def compiled_f(rates) -> object:
-    """The compiled function behind rates with a machine-code ``stages`` hook, else None."""
-    return rates.f if getattr(rates, "stages", None) is not None and hasattr(rates, "f") else None
+    """The compiled function behind rates kept as data (`CompiledRates`), else None (a closure)."""
+    return getattr(rates, "f", None)
 
 
 def is_compiled(sc: Scene) -> bool:
-    """Whether the grading path runs machine-code stages here (llvmlite could compile the rates)."""
-    return isinstance(compiled_f(sc.mech.lagrange_rates(sc.params)), Native)
+    """Whether the grading path runs machine code here (symengine could compile the rates)."""
+    return is_machine_code(compiled_f(sc.mech.lagrange_rates(sc.params)))
 
 
 def reference(sc: Scene, t_eval: np.ndarray) -> Reference:
@@ -294,7 +294,7 @@ def _grading_row(sc: Scene, acc: Accuracy, method: str, t_eval: np.ndarray, y_re
     err = _error(run.y, y_ref) if run.ok else float("inf")
     preset = acc.name if not numpy_stages and acc.name in PRESETS and ACCURACY[acc.name] is acc else ""
     return Row(f"{sc.pid}{sc.key}", "numpy" if numpy_stages else "grading", acc.rtol, err, secs, run.rhs_evals * K,
-               1, run.ok, run.message, preset, runs, [run.rhs_evals], compiled=isinstance(compiled_f(rates), Native))
+               1, run.ok, run.message, preset, runs, [run.rhs_evals], compiled=is_machine_code(compiled_f(rates)))
 
 
 def sweep(sc: Scene, tolerances: Sequence[float] = TOLERANCES, methods: Sequence[str] = METHODS,
