@@ -7,26 +7,29 @@ engine on one part is reported on that part (as a grader error) instead of crash
 
 from __future__ import annotations
 
+import importlib
 import math
 import os
 import signal
 import threading
 import traceback
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from lagrade.answers.load import LoadedAnswer, load_answer
-from lagrade.checkers import CHECKERS, Context, InvalidAnswer
-from lagrade.checkers.gauge import GAUGE_CHECKERS
-from lagrade.compare.trajectory import ACCURACY
+# only what a check needs before the answer's child starts: the engine (checkers, comparison,
+# derivation) is imported by `check` while the child runs, so this module loads in sympy's time
+from lagrade.answers.load import LoadedAnswer, start_loading
 from lagrade.credit import Credit
-from lagrade.library import load_problem
-from lagrade.readback import as_latex, as_unicode
-from lagrade.reference import ReferenceCache, SceneError
+from lagrade.library import SceneFileError, load_problem, scene_message
 from lagrade.result import CheckResult, PartResult
-from lagrade.spec import Problem
-from lagrade.verdict_memo import VerdictMemo
+from lagrade.spec import Problem, SceneError
+
+if TYPE_CHECKING:
+    from lagrade.checkers import Context
+    from lagrade.reference import ReferenceCache
+    from lagrade.verdict_memo import VerdictMemo
 
 _REFERENCES: dict[int, ReferenceCache] = {}
 
@@ -37,6 +40,7 @@ def references(problem: Problem) -> ReferenceCache:
     key = id(problem)
     if key not in _REFERENCES:
         from lagrade import cache
+        from lagrade.reference import ReferenceCache
 
         _REFERENCES[key] = cache.load(problem) or ReferenceCache(problem)
     return _REFERENCES[key]
@@ -54,6 +58,9 @@ def _unusable(part, verdict: str, feedback: str, detail: str | None = None) -> P
     return PartResult(part=part.name, verdict=verdict, score=0.0, max_score=part.weight, method="exact",
                       feedback=feedback, detail=detail)
 
+
+NOT_GRADED = "not graded: "
+"""How the feedback of a part the answer file never reached begins (the file stopped before it)."""
 
 ENGINE_ERROR = ("lagrade could not grade this part: this is an error in lagrade, not a judgement of your "
                 "answer; your instructor can see what went wrong")
@@ -124,6 +131,9 @@ RAISE_AGAIN = 0.05
 def _check(ctx: Context, part, value, gauge: bool = False) -> tuple[PartResult, bool]:
     """The part's grade, and whether it is the value's own (not an error of the engine's). ``gauge``:
     graded as the H of any admissible Lagrangian L + dF(q, t)/dt (`lagrade.checkers.gauge`)."""
+    from lagrade.checkers import CHECKERS, InvalidAnswer
+    from lagrade.checkers.gauge import GAUGE_CHECKERS
+
     try:
         return (GAUGE_CHECKERS if gauge else CHECKERS)[part.kind](ctx, part, value), True
     except InvalidAnswer as exc:
@@ -149,6 +159,9 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
     ``grading_seconds`` bounds the CPU time of the whole grading (:func:`cpu_time_bound`): a part
     not graded by then is ``invalid`` with the reason, so a huge expression gets a verdict, not a
     hang. None leaves any bound to the caller (the bulk grader sets its own around loading too)."""
+    from lagrade.checkers import Context
+    from lagrade.compare.trajectory import ACCURACY
+
     ctx = Context(problem, references(problem), ACCURACY[accuracy], hints=hints, credit=credit or Credit())
     asked = [part for part in problem.parts if not only or part.name in only]
     parts: list[PartResult] = []
@@ -170,7 +183,7 @@ def _ungradable(part, answer: LoadedAnswer) -> PartResult | None:
         return _unusable(part, "invalid", str(answer.part_problems[part.name]))
     if part.name not in answer.values:
         if answer.fatal is not None:
-            return _unusable(part, "invalid", f"not graded: {answer.fatal}")
+            return _unusable(part, "invalid", f"{NOT_GRADED}{answer.fatal}")
         return _unusable(part, "missing", f"no value bound to '{part.name}'")
     return None
 
@@ -277,6 +290,8 @@ class Formulations:
 
 
 def _echo(graded_part: PartResult, value, read_as: tuple[str, ...]) -> PartResult:
+    from lagrade.readback import as_latex, as_unicode
+
     if "latex" in read_as:
         graded_part.read_as = as_latex(value)
     if "unicode" in read_as:
@@ -284,20 +299,83 @@ def _echo(graded_part: PartResult, value, read_as: tuple[str, ...]) -> PartResul
     return graded_part
 
 
-def check(problem: str | Problem, answer: str | Path | None = None, *, accuracy: str = "default",
-          limits=None, hints: bool = False, credit: Credit | None = None, grading_seconds: float | None = None,
-          **parts: object) -> CheckResult:
-    """Grade an answer file, or parts given directly as sympy objects (``check("12.43", H=...)``).
+#: what grading imports, loaded by `check` while an answer's child runs rather than before it starts
+ENGINE = ("lagrade.checkers", "lagrade.checkers.gauge", "lagrade.compare.trajectory", "lagrade.readback")
+
+
+class UnknownPartError(TypeError):
+    """A check asked for a part the problem does not have (a value given for it, or ``only``)."""
+
+
+def check(problem: str | Path | Problem, answer: str | Path | None = None, *, problem_dirs: tuple[Path, ...] = (),
+          accuracy: str = "default", only: list[str] | None = None, hints: bool = False, credit: Credit | None = None,
+          read_as: tuple[str, ...] = ("latex", "unicode"), grading_seconds: float | None = None, limits=None,
+          meanwhile: Callable[[], object] | None = None, **parts: object) -> CheckResult:
+    """Grade an answer file, or parts given directly as sympy objects (``check("12.43", H=...)``):
+    the one way a single answer is graded, for ``lagrade check`` and the Python API alike.
+
+    ``problem`` is an id (looked up in ``problem_dirs`` first), a problem file's path or a
+    :class:`Problem`. The start is staged for speed: an ``answer.py`` runs in its jailed child while
+    this process imports the engine, derives (or loads) the references and runs ``meanwhile`` (the
+    caller's own warm-up, such as the imports of what shows the result); docs/performance.md.
 
     Grading is bounded like bulk grading's: ``grading_seconds`` of CPU time (default
-    :func:`default_grading_seconds`, ``math.inf`` for none; only on the main thread)."""
-    prob = problem if isinstance(problem, Problem) else load_problem(problem)
-    loaded = load_answer(Path(answer), prob, limits) if answer is not None else LoadedAnswer()
+    :func:`default_grading_seconds`, ``math.inf`` for none; only on the main thread).
+
+    Raises :class:`lagrade.spec.SpecError` for a problem that cannot be loaded,
+    :class:`lagrade.library.SceneFileError` (a SpecError too) for one whose scene cannot be derived,
+    with the one line ``FILE:LINE: ...`` naming where, and :class:`UnknownPartError` for a part the
+    problem does not have. An unusable answer file is not an error: its parts are invalid, with why
+    (:func:`unusable`)."""
+    path = Path(answer) if answer is not None else None
+    if path is not None and path.suffix == ".py":
+        from lagrade.answers import zygote
+
+        zygote.current()  # started by the console script already (lagrade.launch), or now: it imports sympy
+    dirs = tuple(Path(d) for d in problem_dirs)
+    if isinstance(problem, Problem):
+        prob = problem
+    else:
+        prob = load_problem(problem, dirs)
+        if Path(problem).suffix == ".toml" and Path(problem).is_file():
+            dirs = (Path(problem).parent, *dirs)  # where a scene error is told to be
+    unknown = [name for name in only or () if name not in {part.name for part in prob.parts}]
+    if unknown:
+        raise UnknownPartError(f"problem {prob.id} has no part {', '.join(unknown)}")
+    given = {}
     for name, value in parts.items():
         try:
-            loaded.values[prob.part(name).name] = value
+            given[prob.part(name).name] = value
         except KeyError:
-            raise TypeError(f"problem {prob.id} has no part '{name}'") from None
+            raise UnknownPartError(f"problem {prob.id} has no part '{name}'") from None
+    finish = start_loading(path, prob, limits) if path is not None else LoadedAnswer
+    try:  # meanwhile, on the other core: the engine and the references
+        for module in ENGINE:
+            importlib.import_module(module)
+        refs = references(prob)
+        for system in prob.systems:
+            refs[system.key]
+        if meanwhile is not None:
+            meanwhile()
+    except SceneError as exc:  # the problem file's fault, not the answer's: its file and line
+        finish()  # the child is collected, not left behind
+        raise SceneFileError(scene_message(prob, exc, dirs), exc.system, exc.field) from exc
+    loaded = finish()
+    loaded.values.update(given)
     if grading_seconds is None:
         grading_seconds = default_grading_seconds()
-    return grade_values(prob, loaded, accuracy, hints=hints, credit=credit, grading_seconds=grading_seconds)
+    try:
+        return grade_values(prob, loaded, accuracy, only, hints=hints, credit=credit, read_as=read_as,
+                            grading_seconds=grading_seconds)
+    except SceneError as exc:
+        raise SceneFileError(scene_message(prob, exc, dirs), exc.system, exc.field) from exc
+
+
+def unusable(result: CheckResult) -> bool:
+    """Whether the answer file gave nothing to grade (it did not run, or not to any part): every part
+    is invalid for the file's own reason, at least one because the file stopped. What the result
+    carries says so; ``lagrade check`` exits with 2 then."""
+    own = set(result.problems)
+    return (any(p.feedback.startswith(NOT_GRADED) for p in result.parts)
+            and all(p.verdict == "invalid" and (p.feedback.startswith(NOT_GRADED) or p.feedback in own)
+                    for p in result.parts))

@@ -15,7 +15,7 @@ import re
 from functools import lru_cache
 from pathlib import Path
 
-from lagrade.spec import Problem, SpecError, load_problem_file
+from lagrade.spec import Problem, SceneError, SpecError, load_problem_file, scene_line
 
 _PACKAGE = Path(__file__).resolve().parent
 #: the entry-point group of installed problem data: each names a package whose folder holds
@@ -116,6 +116,25 @@ def problem_path(pid: str, extra: tuple[Path, ...] = ()) -> Path:
         known = ", ".join(list(index)[:12])
         raise SpecError(f"no problem '{pid}' (known ids: {known}{', ...' if len(index) > 12 else ''})")
     return index[pid]
+
+
+class SceneFileError(SceneError, SpecError):
+    """A problem whose scene cannot be derived: the problem file's fault, not an answer's. Its
+    message is one line naming the file and line (:func:`scene_message`)."""
+
+
+def scene_message(problem: Problem, exc: SceneError, extra: tuple[Path, ...] = ()) -> str:
+    """``problems/12.35.toml:30: the scene uses effects it does not declare ...``: one line. The file
+    is named only when ``problem`` is the one read from it (a problem made in memory has none)."""
+    try:
+        path = problem_path(problem.id, extra)
+        own = load_problem(path) == problem
+    except (KeyError, OSError, ValueError):  # SpecError is a ValueError
+        own = False
+    if not own:
+        return f"problem {problem.id}: {exc}"
+    line = scene_line(path, exc.system, exc.field) if getattr(exc, "field", None) else None
+    return f"{path}:{line}: {exc}" if line else f"{path}: {exc}"
 
 
 @lru_cache(maxsize=128)
