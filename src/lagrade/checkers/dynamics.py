@@ -27,7 +27,15 @@ from lagrade.checkers.base import (
 from lagrade.compare.equations import CompiledRows, analyse_rows
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs
-from lagrade.numeric import CompiledRates, Vectorized, agree, compile_exprs, evaluate, scale_of
+from lagrade.effects import machinery
+from lagrade.numeric import (
+    CompiledRates,
+    Vectorized,
+    agree,
+    compile_exprs,
+    evaluate,
+    scale_of,
+)
 from lagrade.reference import Mechanics, split_energy
 from lagrade.result import PartResult
 from lagrade.sampling import (
@@ -60,20 +68,56 @@ def _trajectory_inits(ctx: Context, mech: Mechanics, part: Part):
     return q, qd, params, extra
 
 
-def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc: Callable[[], Vectorized]) -> Comparison:
+def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc: Callable[[], Vectorized],
+                         student_rows: Callable[[], list[sp.Expr]] | None = None) -> Comparison:
     """``student_acc()``: the student's accelerations, compiled, as a function of the rows [q, q', t,
-    parameters, the part's extra symbols]."""
+    parameters, the part's extra symbols]; ``student_rows()``: the equations they solve (needed where
+    the scene declares switching: both sides are then integrated as switching models)."""
+    run = lagrange_inputs(ctx, mech, part, student_acc, student_rows)
+    comparison = compare_runs(run.student, run.reference, run.y0, run.labels, mech.system.horizon, ctx.accuracy,
+                              events=run.events, student_events=run.student_events, reference_key=run.key,
+                              store=mech.runs)
+    stu, ref = run.student, run.reference
+    if run.switching:   # a picture integrates without events: the exact laws, not branches left by the run
+        stu, ref = stu.exact, ref.exact
+    comparison.case = TrajectoryCase(stu, ref, run.y0, run.labels, mech.system.horizon, ctx.accuracy)
+    return comparison
+
+
+@dataclass
+class LagrangeInputs:
+    """What the trajectory check of a second-order part hands `compare_runs` (also what
+    `lagrade.research.effectsbench` times)."""
+
+    student: Callable
+    reference: Callable
+    y0: np.ndarray
+    labels: list[str]
+    events: list            # the reference run's
+    key: tuple
+    switching: bool
+    student_events: list | None = None   # the student run's (None: the same as the reference's)
+
+
+def lagrange_inputs(ctx: Context, mech: Mechanics, part: Part, student_acc: Callable[[], Vectorized],
+                    student_rows: Callable[[], list[sp.Expr]] | None = None, *,
+                    everything: bool = False) -> LagrangeInputs:
+    """Scenes that declare switching (dissipation with a velocity sign/Abs): the scene's model and the
+    student's rows as switching models with shared events. Others: the student's compiled rates
+    against the generic reference, with contact-loss events only for unilateral contact.
+    ``everything``: the switching path with all machinery compiled in (the benchmark's baseline)."""
     q, qd, params, extra = _trajectory_inits(ctx, mech, part)
     n = len(mech.names)
-    stu = CompiledRates(student_acc(), 2 * n, np.concatenate([params, extra]), copied=n)
+    constants = np.concatenate([params, extra])
     labels = [*mech.names, *(f"{x}'" for x in mech.names)]
-    ref = mech.lagrange_rates(params)
     y0 = np.concatenate([q, qd])
-    comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy,
-                              events=_contact_events(mech, y0, params),
-                              reference_key=("lagrange", tuple(part.symbols)), store=mech.runs)
-    comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
-    return comparison
+    if student_rows is not None and (everything or machinery(mech).switching):
+        stu, ref, events, stu_events = _switching_models(mech, part, student_rows(), params, constants, y0, everything)
+        return LagrangeInputs(stu, ref, y0, labels, events, ("lagrange-switching", tuple(part.symbols)), True,
+                              stu_events)
+    stu = CompiledRates(student_acc(), 2 * n, constants, copied=n)
+    return LagrangeInputs(stu, mech.lagrange_rates(params), y0, labels, _contact_events(mech, y0, params),
+                          ("lagrange", tuple(part.symbols)), False)
 
 
 def _contact_events(mech: Mechanics, y0: np.ndarray, params: np.ndarray) -> list:
@@ -83,27 +127,74 @@ def _contact_events(mech: Mechanics, y0: np.ndarray, params: np.ndarray) -> list
         return []
     from lagrade.scene_model import SceneModel
 
-    return [e for e in SceneModel(mech).events(y0, params) if e.action == "stop"]
+    return SceneModel(mech).contact_events(y0, params)
 
 
-def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rates: Callable[[], Vectorized]) -> Comparison:
-    """``student_rates()``: (q', p') compiled as a function of the rows [q, p, t, parameters, extra]."""
+def _switching_models(mech: Mechanics, part: Part, rows: list[sp.Expr], params: np.ndarray,
+                      constants: np.ndarray, y0: np.ndarray, everything: bool = False):
+    """The scene's declared-effects model (the reference) and the student's equations made a switching
+    model the same way (each velocity sign a branch, Filippov's rule at its zeros), each with its own
+    switching events, and the reference's contact loss stopping both: (student, reference, the
+    reference's events, the student's)."""
+    from lagrade.scene_model import EquationsModel, SceneModel
+
+    ref = SceneModel(mech, everything=everything)
+    ref.params = params
+    args = [*mech.s.q, *mech.s.qd, T, *mech.params, *(sp.Symbol(s) for s in part.symbols)]
+    stu = EquationsModel(rows, mech, args, constants)
+    contact = SceneModel(mech, everything=everything).contact_events(y0, params)  # unarmed: the exact forces
+    return stu, ref, contact + ref.switching_events(y0), contact + stu.switching_events(y0)
+
+
+def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rates: Callable[[], Vectorized],
+                         student_rows: Callable[[], list[sp.Expr]] | None = None) -> Comparison:
+    """``student_rates()``: (q', p') compiled as a function of the rows [q, p, t, parameters, extra];
+    ``student_rows()``: the equations (linear in q', p') they solve, needed where the scene declares
+    switching: both sides are then integrated as switching models in (q, p)."""
     q, qd, params, extra = _trajectory_inits(ctx, mech, part)
     n = len(mech.names)
     t0 = np.zeros(q.shape[1])
     p = mech.momenta(q, qd, t0, params)
-
-    def ref(t: float, y: np.ndarray) -> np.ndarray:
-        return mech.hamilton_rates(y[:n], y[n:], np.full(y.shape[1], t), params)
-
-    stu = CompiledRates(student_rates(), 2 * n, np.concatenate([params, extra]))
-
     labels = [*mech.names, *(f"p_{x}" for x in mech.names)]
     y0 = np.concatenate([q, p])
-    comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy,
-                              reference_key=("hamilton", tuple(part.symbols)), store=mech.runs)
+    constants = np.concatenate([params, extra])
+    models = _hamilton_switching(ctx, mech, part, student_rows, constants, y0) \
+        if student_rows is not None and machinery(mech).switching else None
+    if models is not None:
+        stu, ref, events, stu_events = models
+        key = ("hamilton-switching", tuple(part.symbols))
+    else:
+        def ref(t: float, y: np.ndarray) -> np.ndarray:
+            return mech.hamilton_rates(y[:n], y[n:], np.full(y.shape[1], t), params)
+
+        stu = CompiledRates(student_rates(), 2 * n, constants)
+        events, stu_events, key = [], None, ("hamilton", tuple(part.symbols))
+    comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy, events=events,
+                              student_events=stu_events, reference_key=key, store=mech.runs)
+    if models is not None:   # a picture integrates without events: the exact laws
+        stu, ref = stu.exact, ref.exact
     comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
     return comparison
+
+
+def _hamilton_switching(ctx: Context, mech: Mechanics, part: Part, student_rows: Callable[[], list[sp.Expr]],
+                        constants: np.ndarray, y0: np.ndarray):
+    """Hamilton's equations of the reference H and the student's, as switching models in (q, p) built
+    the same way (the friction's sign is one of p there), each with its own events; None when the
+    reference H cannot be had in time (then the generic path, as before)."""
+    from lagrade.scene_model import EquationsModel
+
+    try:
+        with time_bound(ctx.symbolic_seconds):
+            H_ref = mech.hamiltonian_symbolic
+    except _OutOfTime:
+        return None
+    s = mech.s
+    args = [*s.q, *s.p, T, *mech.params, *(sp.Symbol(x) for x in part.symbols)]
+    form = {"unknowns": [*s.qd, *s.pd], "state": [*s.q, *s.p], "velocities": set(s.p), "copied": False}
+    ref = EquationsModel(hamilton_rows(H_ref, mech), mech, args, constants, **form)
+    stu = EquationsModel(student_rows(), mech, args, constants, **form)
+    return stu, ref, ref.switching_events(y0), stu.switching_events(y0)
 
 
 @dataclass
@@ -247,11 +338,14 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
 
     student_acc = _once(lambda: _lagrange_solver(L_s, mech, part))
 
+    def student_rows() -> list[sp.Expr]:
+        return mech.lagrange_rows(L_s)
+
     if c is not None and np.allclose(c, 1.0, rtol=rtol, atol=0):
         proof, traj = _confirm(
             ctx, lambda: proves_all_zero([a - b for a, b in zip(mech.lagrange_rows(L_s), mech.EL)],
                                          ctx.symbolic_seconds, ctx.positive),
-            lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
+            lambda: _trajectory_lagrange(ctx, mech, part, student_acc, student_rows))
         args = [*mech.s.q, *mech.s.qd, T, *mech.params]
         diff = evaluate([L_s - mech.L], args, pts.args(args))[0]
         constant = all(np.allclose(diff[g * per:(g + 1) * per], diff[g * per], rtol=1e-8,
@@ -278,7 +372,7 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
             message += (" Your L does not determine every acceleration: its kinetic energy leaves a coordinate out "
                         "(the matrix of d2L/dq'dq' is singular).")
         return _wrong(part, 0.0, message, None, ctx.credit)
-    traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
+    traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc, student_rows))
     return _wrong(part, 0.0, message, traj)
 
 
@@ -463,7 +557,7 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
 
     if an.fraction >= 1.0:
         proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
-                               lambda: _trajectory_lagrange(ctx, mech, part, student_acc))
+                               lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows))
         return _decide(ctx, part, proof, traj)
     _relabel(an, compiled, mech, pts, args, truth)
     named = _eom_mistake(part, mech, compiled, pts.args(args), list(mech.names))
@@ -484,7 +578,8 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
                         f"an equation is missing or repeated")
     if lams and problems:
         problems[0] = f"once the multipliers ({', '.join(lams)}) are eliminated, {problems[0]}"
-    traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc)) if len(rows) >= an.n else None
+    traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows)) \
+        if len(rows) >= an.n else None
     return _wrong(part, an.fraction, named or _sentence(problems), traj, ctx.credit)
 
 
@@ -634,6 +729,9 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
 
     student_rates = _once(lambda: _hamiltonian_rates(H_s, mech, part))
 
+    def student_rows() -> list[sp.Expr]:
+        return hamilton_rows(H_s, mech)
+
     if same:
         def prove() -> bool | None:
             try:
@@ -645,11 +743,11 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
             return proves_all_zero([sp.diff(d, v) for v in [*mech.s.q, *mech.s.p]],
                                    ctx.symbolic_seconds, ctx.positive)
 
-        proof, traj = _confirm(ctx, prove, lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
+        proof, traj = _confirm(ctx, prove, lambda: _trajectory_hamilton(ctx, mech, part, student_rates, student_rows))
         note = "" if np.all(np.abs(diff) <= tol) else "It differs from the usual H by a function of t only."
         return _decide(ctx, part, proof, traj, note)
     message = _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, (q, p, t, params))
-    traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
+    traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, student_rows))
     return _wrong(part, 0.0, message, traj)
 
 
@@ -661,13 +759,20 @@ def _has_velocity(value: object, mech: Mechanics) -> bool:
         if isinstance(s, sp.Symbol))
 
 
+def hamilton_rows(H: sp.Expr, mech: Mechanics) -> list[sp.Expr]:
+    """Hamilton's equations of ``H`` with the scene's forces, as rows ``q' - dH/dp``, ``p' + dH/dq - Q``
+    (the generalized forces Q(q, q', t) at q' = dH/dp)."""
+    qd = [sp.diff(H, p) for p in mech.s.p]
+    at_qd = dict(zip(mech.s.qd, qd))
+    pd = [-sp.diff(H, q) + sp.sympify(Qi).xreplace(at_qd) for q, Qi in zip(mech.s.q, mech.Q)]
+    return [*(u - e for u, e in zip(mech.s.qd, qd)), *(u - e for u, e in zip(mech.s.pd, pd))]
+
+
 def _hamiltonian_rates(H: sp.Expr, mech: Mechanics, part: Part):
     extra = [sp.Symbol(s) for s in part.symbols]
     args = [*mech.s.q, *mech.s.p, T, *mech.params, *extra]
-    qd = [sp.diff(H, p) for p in mech.s.p]
-    at_qd = dict(zip(mech.s.qd, qd))  # the generalized forces Q(q, q', t), at q' = dH/dp
-    pd = [-sp.diff(H, q) + sp.sympify(Qi).xreplace(at_qd) for q, Qi in zip(mech.s.q, mech.Q)]
-    return compile_exprs([*qd, *pd], args)
+    rows = hamilton_rows(H, mech)
+    return compile_exprs([u - r for u, r in zip([*mech.s.qd, *mech.s.pd], rows)], args)
 
 
 def _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, state) -> str:
@@ -732,7 +837,7 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
         return compiled.solver
 
     if an.fraction >= 1.0:
-        traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates))
+        traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, lambda: rows))
         return _decide(ctx, part, None, traj)
     problems = [f"equation {i + 1} (for {an.labels[i]}) does not hold for the true motion" for i in an.wrong]
     if an.vanishing_factor:
@@ -741,5 +846,6 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
     elif an.rank < an.n and not an.wrong:
         problems.append(f"your equations determine only {an.rank} of the {an.n} rates "
                         f"({', '.join(labels)}): Hamilton's equations are 2n first-order equations")
-    traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates)) if len(rows) >= an.n else None
+    traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, lambda: rows)) \
+        if len(rows) >= an.n else None
     return _wrong(part, an.fraction, _sentence(problems), traj, ctx.credit)
