@@ -52,6 +52,36 @@ def test_warm_check_still_catches_a_wrong_answer(tmp_path):
     assert result["score"] < result["max_score"]
 
 
+def test_a_check_never_rewrites_an_entry_it_loaded_but_cache_build_does(tmp_path):
+    """What an answer makes the grader derive (here: a wrong L whose diagnosis parses the problem's
+    named mistakes) must not change an existing entry: the red team's poison-cache."""
+    env = {**os.environ, "LAGRADE_CACHE": str(tmp_path / "c")}
+    _check("12.22", env)  # makes the entry
+    [entry] = cache.entries(tmp_path / "c")
+    before = entry.read_bytes()
+    wrong = tmp_path / "wrong.py"
+    wrong.write_text((ROOT / "reference_solutions" / "12.22" / "answer.py").read_text() + "\nL = L**3\n")
+    result = _check("12.22", env, wrong)
+    assert result["score"] < result["max_score"]
+    assert entry.read_bytes() == before
+    # `lagrade cache build` grades the reference solution into the entry it loads, and may add to it
+    from lagrade.grade import keep_references, references
+
+    problem = load_problem("12.22")
+    os.environ["LAGRADE_CACHE"], saved = str(tmp_path / "c"), os.environ.get("LAGRADE_CACHE")
+    try:
+        refs = references(problem)
+        refs["" if "" in {s.key for s in problem.systems} else problem.systems[0].key].parse("x_d**7")
+        assert not keep_references(problem)
+        assert keep_references(problem, update=True)
+    finally:
+        if saved is None:
+            del os.environ["LAGRADE_CACHE"]
+        else:
+            os.environ["LAGRADE_CACHE"] = saved
+    assert entry.read_bytes() != before
+
+
 def _warm(problem) -> ReferenceCache:
     from lagrade.grade import references
 

@@ -42,16 +42,30 @@ def references(problem: Problem) -> ReferenceCache:
         from lagrade import cache
         from lagrade.reference import ReferenceCache
 
-        _REFERENCES[key] = cache.load(problem) or ReferenceCache(problem)
+        loaded = cache.load(problem)
+        if loaded is not None:
+            _FROM_DISK.add(key)
+        _REFERENCES[key] = loaded or ReferenceCache(problem)
     return _REFERENCES[key]
 
 
-def keep_references(problem: Problem) -> bool:
-    """Save what this process derived for ``problem`` to the disk cache (if anything is new)."""
+#: problems whose references this process loaded from the disk cache (see `keep_references`)
+_FROM_DISK: set[int] = set()
+
+
+def keep_references(problem: Problem, *, update: bool = False) -> bool:
+    """Save what this process derived for ``problem`` to the disk cache (if anything is new).
+
+    A check or a class writes an entry only where there was none: it never rewrites one it loaded,
+    so an answer, whatever it makes the grader derive (a named mistake's parse, a diagnosis), cannot
+    change an existing entry (the red team's poison-cache). ``update``: `lagrade cache build` adds to
+    an entry it loaded."""
     from lagrade import cache
 
     refs = _REFERENCES.get(id(problem))
-    return refs is not None and cache.save(refs)
+    if refs is None or (id(problem) in _FROM_DISK and not update):
+        return False
+    return cache.save(refs)
 
 
 def _unusable(part, verdict: str, feedback: str, detail: str | None = None) -> PartResult:

@@ -54,7 +54,7 @@ def build(ids: tuple[str, ...], problems_dir: tuple[Path, ...]) -> None:
                 refs = references(problem)
                 for system in problem.systems:
                     refs[system.key]
-            saved = keep_references(problem)
+            saved = keep_references(problem, update=True)
         except Exception as exc:  # noqa: BLE001  (one broken scene must not stop the others)
             click.echo(f"{pid}: failed ({type(exc).__name__}: {exc})", err=True)
             failed += 1
