@@ -3,7 +3,7 @@
     python benchmarks/accuracy.py [--markdown]
 
 1. For 12.14 and 12.43 at the default preset's tolerance (1e-10): error, median time and evaluations of
-   the grading path (the compiled DOP853 grading runs), of the same integrator with its stages in numpy,
+   the grading path (the compiled DOP853 grading runs), of the same integrator on rates as numpy code,
    and of scipy's methods one trajectory at a time, as ratios to the grading path
    (`lagrade.research.workprecision`; reference Radau at 1e-13).
 2. For the spring pendulum 12.7 with k/m from 1e1 to 1e6: evaluations and time of DOP853, LSODA and

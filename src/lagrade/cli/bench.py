@@ -31,7 +31,7 @@ def bench() -> None:
               help="Folder for accuracy.csv and accuracy.png.")
 @click.option("--methods", default="grading,RK45,DOP853,Radau,LSODA,BDF", show_default=True,
               help="Comma-separated: grading (the grader's own path), RK45, DOP853, Radau, LSODA, BDF (scipy, "
-                   "one trajectory per call), numpy (the grader's DOP853 with numpy stages), symplectic.")
+                   "one trajectory per call), numpy (the grader's DOP853 on rates as numpy code), symplectic.")
 @click.option("--tolerances", default="1e-3..1e-12", show_default=True,
               help="A range 1e-3..1e-12 (every decade) or a comma-separated list; the presets' own are added "
                    "to the grading path.")

@@ -45,7 +45,7 @@ from lagrade.compare.trajectory import (
     stiff_method,
 )
 from lagrade.library import load_problem
-from lagrade.numeric import is_machine_code
+from lagrade.numeric import CompiledRates, compile_numpy, is_machine_code
 from lagrade.reference import Mechanics
 from lagrade.sampling import rng_for, sample_points, state_arrays
 
@@ -63,8 +63,8 @@ CHECK_METHOD = "DOP853"
 LABELS = {
     "grading": "lagrade (grading path, DOP853 compiled)",
     #: the grading path where symengine cannot compile the rates (or LAGRADE_NATIVE=0): said, not hidden
-    "grading-numpy": "lagrade (grading path, DOP853 numpy stages: rates not compiled)",
-    "numpy": "lagrade DOP853, numpy stages (not the grading path)",
+    "grading-numpy": "lagrade (grading path, DOP853, rates as numpy code: not compiled)",
+    "numpy": "lagrade DOP853, rates as numpy code (not the grading path)",
     "symplectic": "symplectic order 4, fixed step (numpy)",
     **{m: f"scipy {m} (per trajectory)" for m in SCIPY},
 }
@@ -282,13 +282,14 @@ def _closed_form_check(sc: Scene, t_eval: np.ndarray, y_ref: np.ndarray) -> floa
 def _grading_row(sc: Scene, acc: Accuracy, method: str, t_eval: np.ndarray, y_ref: np.ndarray, repeat: int,
                  numpy_stages: bool = False) -> Row:
     """`integrate` exactly as `compare_runs` calls it for an answer: the same rates object, the
-    preset, the resolved method, the sample times."""
+    preset, the resolved method, the sample times. ``numpy_stages``: the same, with the rates as
+    numpy code instead of machine code (what the compiler buys)."""
     K = sc.y0.shape[1]
     rates = sc.mech.lagrange_rates(sc.params)
-    if numpy_stages:  # the same integrator with its stage loop in Python: no ``stages`` hook to find
-        inner = rates
-        def rates(t, Y):
-            return inner(t, Y)
+    if numpy_stages:
+        n = len(sc.mech.names)
+        exprs = sc.mech.accelerations_symbolic
+        rates = CompiledRates(compile_numpy(exprs, sc.mech.args), 2 * n, rates.constants, copied=n)
     run, secs, runs = _median_timed(lambda: integrate(rates, sc.y0, sc.horizon, acc, method=method,
                                                       t_eval=t_eval), repeat)
     err = _error(run.y, y_ref) if run.ok else float("inf")
