@@ -52,7 +52,7 @@ def test_warm_check_still_catches_a_wrong_answer(tmp_path):
     assert result["score"] < result["max_score"]
 
 
-def test_a_check_never_rewrites_an_entry_it_loaded_but_cache_build_does(tmp_path):
+def test_a_check_never_rewrites_an_entry_it_loaded_but_cache_build_does(tmp_path, monkeypatch):
     """What an answer makes the grader derive (here: a wrong L whose diagnosis parses the problem's
     named mistakes) must not change an existing entry: the red team's poison-cache."""
     env = {**os.environ, "LAGRADE_CACHE": str(tmp_path / "c")}
@@ -65,20 +65,16 @@ def test_a_check_never_rewrites_an_entry_it_loaded_but_cache_build_does(tmp_path
     assert result["score"] < result["max_score"]
     assert entry.read_bytes() == before
     # `lagrade cache build` grades the reference solution into the entry it loads, and may add to it
-    from lagrade.grade import keep_references, references
+    from lagrade import grade
 
+    monkeypatch.setenv("LAGRADE_CACHE", str(tmp_path / "c"))
+    monkeypatch.setattr(grade, "_REFERENCES", {})  # as in a fresh process: loaded from the entry
+    monkeypatch.setattr(grade, "_FROM_DISK", set())
     problem = load_problem("12.22")
-    os.environ["LAGRADE_CACHE"], saved = str(tmp_path / "c"), os.environ.get("LAGRADE_CACHE")
-    try:
-        refs = references(problem)
-        refs["" if "" in {s.key for s in problem.systems} else problem.systems[0].key].parse("x_d**7")
-        assert not keep_references(problem)
-        assert keep_references(problem, update=True)
-    finally:
-        if saved is None:
-            del os.environ["LAGRADE_CACHE"]
-        else:
-            os.environ["LAGRADE_CACHE"] = saved
+    grade.references(problem)[problem.systems[0].key].parse("x_d**7")
+    assert not grade.keep_references(problem)
+    assert entry.read_bytes() == before
+    assert grade.keep_references(problem, update=True)
     assert entry.read_bytes() != before
 
 
