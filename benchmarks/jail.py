@@ -16,8 +16,8 @@ import sys
 import time
 from pathlib import Path
 
-from lagrade.answers import jail, zygote
-from lagrade.answers.sandbox import run_answer_file
+from lagrade.jail import kernel, zygote
+from lagrade.jail.sandbox import run_answer_file
 from lagrade.library import reference_dir
 
 TRIVIAL = "from lagrade.answer import *\ntheta = coordinates('theta')\nL = dot(theta)**2/2 + cos(theta)\n"
@@ -48,17 +48,17 @@ def main() -> None:
         for label, (path, wanted) in cases.items():
             jailed, bare = [], []
             for _ in range(args.rounds):  # alternated: the host's load moves both alike
-                jailed.append(per_answer(jail.LAYERS, path, wanted, args.answers))
+                jailed.append(per_answer(kernel.LAYERS, path, wanted, args.answers))
                 bare.append(per_answer((), path, wanted, args.answers))
             j, b = statistics.median(jailed), statistics.median(bare)
             rows.append(f"| {label} | {b * 1e3:.1f} ms | {j * 1e3:.1f} ms | {(j - b) * 1e3:+.1f} ms |")
         starts = []
         for _ in range(args.rounds):
             t0 = time.perf_counter()
-            zygote.start(jail.LAYERS).hello()
+            zygote.start(kernel.LAYERS).hello()
             starts.append(time.perf_counter() - t0)
             zygote.stop()
-        active = zygote.start(jail.LAYERS).active
+        active = zygote.start(kernel.LAYERS).active
         zygote.stop()
     finally:
         tmp.unlink(missing_ok=True)

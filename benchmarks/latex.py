@@ -1,12 +1,12 @@
 """LaTeX readers: lagrade's path against sympy's ANTLR and Lark backends (issue 24 §2).
 
-lagrade reads one item of a LaTeX answer in three steps (``answers/latex.py``): its pre-pass rewrites
+lagrade reads one item of a LaTeX answer in three steps (``reading/latex.py``): its pre-pass rewrites
 the student's text into LaTeX that sympy's grammar reads as meant, a reader turns that into an
-unevaluated sympy tree (``latex._sympy_parse``: the subset reader ``answers/latex_subset.py``, or
+unevaluated sympy tree (``latex._sympy_parse``: the subset reader ``reading/latex_subset.py``, or
 sympy's ANTLR parser where the subset reader declines), and a rebuild maps names and allows only
 what an answer may hold. This script swaps the middle step for each reader and measures:
 
-* ``lagrade``: ``latex._sympy_parse`` as ``answers/latex.py`` uses it (subset reader, else ANTLR);
+* ``lagrade``: ``latex._sympy_parse`` as ``reading/latex.py`` uses it (subset reader, else ANTLR);
 * ``antlr``: ``sympy.parsing.latex.parse_latex(text, strict=True)`` (sympy's default backend);
 * ``lark``: ``parse_latex(text, backend="lark")`` (needs ``pip install lark``).
 
@@ -52,13 +52,13 @@ sys.path.insert(0, str(REPO / "tests"))
 
 import sympy as sp
 
-from lagrade.answers import latex, latex_subset
+from lagrade.reading import latex, latex_subset
 
 #: an item every reader reads (Lark declines most of what the pre-pass writes: see --show-wrong)
 SAMPLE = r"\frac{1}{2} m v^2 + m g l \cos(\theta)"
 #: what each reader costs before its first item, run in a fresh interpreter after ``import sympy``
 FIRST_USE = {
-    "lagrade": "from lagrade.answers import latex\nlatex._sympy_parse(S)",
+    "lagrade": "from lagrade.reading import latex\nlatex._sympy_parse(S)",
     "antlr": "from sympy.parsing.latex import parse_latex\nparse_latex(S, strict=True)",
     "lark": "from sympy.parsing.latex import parse_latex\nparse_latex(S, backend='lark')",
 }
@@ -128,7 +128,7 @@ class Text:
 
 def answer_pieces(paths: list[tuple[Path, str]]) -> dict[Path, list[Piece]]:
     """Every LaTeX item of each answer file, captured while lagrade loads it."""
-    from lagrade.answers.load import load_answer
+    from lagrade.reading.load import load_answer
     from lagrade.library import load_problem
 
     out: dict[Path, list[Piece]] = {}

@@ -38,8 +38,8 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=1)
     args = ap.parse_args()
 
-    from lagrade.answers.load import load_answer
-    from lagrade.answers.sandbox import SandboxLimits
+    from lagrade.reading.load import load_answer
+    from lagrade.jail.sandbox import SandboxLimits
     from lagrade.bulk.assignment import parse_assignment
     from lagrade.bulk.display import show
     from lagrade.bulk.layout import Submission, file_hash

@@ -16,7 +16,7 @@ from functools import cache
 import numpy as np
 import sympy as sp
 
-from lagrade.answers.text import parse_math
+from lagrade.reading.text import parse_math
 from lagrade.checkers.dynamics import split_energy
 from lagrade.checkers.values import _reference
 from lagrade.grade import references

@@ -85,7 +85,7 @@ def test_a_following_part_falls_back_to_the_primary_and_says_so():
 
 
 def test_grading_one_following_part_grades_what_it_follows():
-    from lagrade.answers.load import LoadedAnswer
+    from lagrade.reading.load import LoadedAnswer
     from lagrade.grade import grade_values
 
     problem = load_problem("12.47")
@@ -96,7 +96,7 @@ def test_grading_one_following_part_grades_what_it_follows():
 
 
 def test_the_verdict_memo_keeps_a_following_part_apart_per_formulation():
-    from lagrade.answers.load import LoadedAnswer
+    from lagrade.reading.load import LoadedAnswer
     from lagrade.grade import grade_values
 
     problem, memo = load_problem("12.47"), VerdictMemo()
@@ -108,7 +108,7 @@ def test_the_verdict_memo_keeps_a_following_part_apart_per_formulation():
 
 
 def test_a_followed_part_is_memoized_with_its_formulation(monkeypatch):
-    from lagrade.answers.load import LoadedAnswer
+    from lagrade.reading.load import LoadedAnswer
     from lagrade.checkers import CHECKERS
     from lagrade.grade import grade_values
 
@@ -216,7 +216,7 @@ def test_a_named_mistake_of_an_alternative_is_recognised_in_its_formulation(pid,
     right, gets its sentence, and the sentence gives nothing away."""
     from test_named_mistakes import _as_answer
 
-    from lagrade.answers.load import LoadedAnswer
+    from lagrade.reading.load import LoadedAnswer
     from lagrade.grade import grade_values
 
     problem = load_problem(pid)

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from lagrade import cache
-from lagrade.answers.load import load_answer
+from lagrade.reading.load import load_answer
 from lagrade.grade import grade_values
 from lagrade.library import load_problem
 from lagrade.reference import ReferenceCache
@@ -152,7 +152,7 @@ def test_cache_off(monkeypatch):
 
 
 def test_answers_can_never_read_the_cache(monkeypatch, tmp_path):
-    from lagrade.answers import child
+    from lagrade.jail import child
 
     monkeypatch.setenv("LAGRADE_CACHE", str(tmp_path / "c"))
     child.secret_dirs.cache_clear()

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from lagrade import cache
-from lagrade.answers.load import load_answer
+from lagrade.reading.load import load_answer
 from lagrade.grade import grade_values, references
 from lagrade.library import load_problem
 

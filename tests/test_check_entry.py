@@ -13,7 +13,7 @@ from click.testing import CliRunner
 
 import lagrade
 from lagrade import grade
-from lagrade.answers.load import load_answer
+from lagrade.reading.load import load_answer
 from lagrade.cli import main
 from lagrade.library import SceneFileError, load_problem
 from lagrade.spec import SceneError, SpecError

@@ -150,7 +150,7 @@ def test_feedback_on_a_general_answer_names_no_substitute():
 # --------------------------------------------------------------------------- LaTeX, show, cache
 
 def test_latex_reads_calls_primes_and_leibniz_derivatives_of_a_declared_function():
-    from lagrade.answers.latex import parse_latex_answer
+    from lagrade.reading.latex import parse_latex_answer
 
     r = sp.Function("r")(t)
     F = {"V": 1}

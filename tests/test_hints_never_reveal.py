@@ -116,7 +116,7 @@ VALUE_PARTS = [pytest.param(pid, part.name, id=f"{pid}-{part.name}") for pid in 
 def test_feedback_on_a_scaled_reference_gives_nothing_away(pid, part_name):
     """Every result part, answered with its reference off by a factor (one entry of a dict or list):
     what the checker composes names the factor, never the value."""
-    from lagrade.answers.load import LoadedAnswer
+    from lagrade.reading.load import LoadedAnswer
     from lagrade.grade import grade_values
     from test_named_mistakes import _as_answer
 

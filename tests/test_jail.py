@@ -20,8 +20,8 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.answers import jail, sandbox, zygote
-from lagrade.answers.sandbox import SandboxLimits, run_answer_file
+from lagrade.jail import kernel, sandbox, zygote
+from lagrade.jail.sandbox import SandboxLimits, run_answer_file
 from lagrade.library import reference_dir
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the OS jail is Linux's")
@@ -156,10 +156,10 @@ def test_no_new_privs_alone_is_set_in_the_child(tmp_path, no_tripwires):
 def test_every_layer_together_is_what_a_grader_gets(tmp_path, listener, no_tripwires):
     """As root on Linux (this project's machines) every layer is active, and all attacks fail."""
     port, accepted = listener
-    seen, active = _run(jail.LAYERS, tmp_path, port)
+    seen, active = _run(kernel.LAYERS, tmp_path, port)
     if os.geteuid() == 0:
-        assert active == list(jail.LAYERS)
-    assert jail.missing_minimum(active) is None
+        assert active == list(kernel.LAYERS)
+    assert kernel.missing_minimum(active) is None
     assert all(v != "done" for v in seen.values()), seen
     assert not accepted
 
@@ -194,6 +194,6 @@ def test_landlock_alone_grants_around_site_packages_and_secrets(tmp_path):
     for d in ("json", "site-packages/sympy/core", "site-packages/lagrade/_data/problems", "secret/inner"):
         (stdlib / d).mkdir(parents=True)
     (stdlib / "os.py").write_text("")
-    grants = jail.landlock_grants([str(stdlib), str(stdlib / "site-packages" / "sympy")],
+    grants = kernel.landlock_grants([str(stdlib), str(stdlib / "site-packages" / "sympy")],
                                   [str(stdlib / "site-packages"), str(stdlib / "secret")])
     assert grants == sorted([str(stdlib / "json"), str(stdlib / "os.py"), str(stdlib / "site-packages" / "sympy")])

@@ -1,4 +1,4 @@
-"""The fast LaTeX reader (``answers/latex_subset.py``) against sympy's ANTLR parser.
+"""The fast LaTeX reader (``reading/latex_subset.py``) against sympy's ANTLR parser.
 
 Whatever the reader returns must be sympy's tree, node for node (``srepr``): on generated answers,
 on token soup, on the grammar's odd corners and on the pre-pass output of every LaTeX answer we
@@ -14,7 +14,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from lagrade.answers import latex, latex_subset
+from lagrade.reading import latex, latex_subset
 
 ROOT = Path(__file__).resolve().parents[1]
 CONVERTER = latex._antlr_converter()
@@ -142,7 +142,7 @@ def _golden_latex_answers():
 def test_the_reader_reads_every_golden_latex_answer_itself(monkeypatch):
     """Every item of every LaTeX answer we have goes through the reader, except the operator
     form d/dt(...) (a differential to sympy's grammar): sympy's parser is the fallback, not the rule."""
-    from lagrade.answers.load import load_answer
+    from lagrade.reading.load import load_answer
     from lagrade.library import load_problem
 
     read, declined = [], []
@@ -176,7 +176,7 @@ def test_an_answer_the_reader_reads_does_not_load_sympys_latex_parser(tmp_path):
     answer.write_text('L = "\\\\frac{1}{2} m_1 \\\\dot{x}^2 + m_1 g x"\n', encoding="utf-8")
     probe = (
         "import sys\n"
-        "from lagrade.answers.load import load_answer\n"
+        "from lagrade.reading.load import load_answer\n"
         "from lagrade.library import load_problem\n"
         f"loaded = load_answer(__import__('pathlib').Path({str(answer)!r}), load_problem('12.22'))\n"
         "assert 'L' in loaded.values, loaded.problems\n"

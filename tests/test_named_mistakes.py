@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 from leaks import reveals
 
-from lagrade.answers.load import LoadedAnswer
+from lagrade.reading.load import LoadedAnswer
 from lagrade.checkers.values import _symbolic_reference
 from lagrade.grade import grade_values, references
 from lagrade.library import load_problem, problem_ids

@@ -10,7 +10,7 @@ import sympy as sp
 from hypothesis import HealthCheck, assume, given, settings
 
 from expression_strategies import expressions
-from lagrade.answers.rebuild import (
+from lagrade.jail.rebuild import (
     MAX_NODES,
     EncodedValue,
     RebuildError,

@@ -11,7 +11,7 @@ import pytest
 import sympy as sp
 
 import lagrade
-from lagrade.answers.text import load_toml_answer
+from lagrade.reading.text import load_toml_answer
 from lagrade.checkers.base import multiplier_names
 from lagrade.grade import references
 from lagrade.library import load_problem

@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from lagrade.answers.load import LoadedAnswer, load_answer
-from lagrade.answers.rebuild import expr_nodes, rebuild_nodes, rebuild_srepr
+from lagrade.reading.load import LoadedAnswer, load_answer
+from lagrade.jail.rebuild import expr_nodes, rebuild_nodes, rebuild_srepr
 from lagrade.checkers import CHECKERS
 from lagrade.credit import Credit
 from lagrade.grade import grade_values

@@ -1,4 +1,4 @@
-"""The clean zygote (lagrade.answers.zygote): the process students' code is forked from never held
+"""The clean zygote (lagrade.jail.zygote): the process students' code is forked from never held
 the key, keeps none of the grader's descriptors, reaps what nobody asks about, dies with its
 grader, and leaves nothing behind."""
 
@@ -14,9 +14,9 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.answers import zygote
-from lagrade.answers.rebuild import decode_value
-from lagrade.answers.sandbox import SandboxLimits, run_answer_file, start_answer_file
+from lagrade.jail import zygote
+from lagrade.jail.rebuild import decode_value
+from lagrade.jail.sandbox import SandboxLimits, run_answer_file, start_answer_file
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
 
@@ -124,7 +124,7 @@ def test_children_nobody_asks_about_are_reaped(tmp_path):
 
 
 def test_the_zygote_dies_with_its_grader_and_leaves_nothing():
-    script = ("import sys\nfrom lagrade.answers import zygote\nz = zygote.start()\nz.hello()\n"
+    script = ("import sys\nfrom lagrade.jail import zygote\nz = zygote.start()\nz.hello()\n"
               "print(z.proc.pid, z.staging, flush=True)\nsys.stdin.read()\n")
     grader = subprocess.Popen([sys.executable, "-c", script], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
     pid, staging = (grader.stdout.readline().split() + [""])[:2]

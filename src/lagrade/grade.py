@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 
 # only what a check needs before the answer's child starts: the engine (checkers, comparison,
 # derivation) is imported by `check` while the child runs, so this module loads in sympy's time
-from lagrade.answers.load import LoadedAnswer, start_loading
+from lagrade.reading.load import LoadedAnswer, start_loading
 from lagrade.credit import Credit
 from lagrade.library import SceneFileError, load_problem, scene_message
 from lagrade.result import CheckResult, PartResult
@@ -343,7 +343,7 @@ def check(problem: str | Path | Problem, answer: str | Path | None = None, *, pr
     (:func:`unusable`)."""
     path = Path(answer) if answer is not None else None
     if path is not None and path.suffix == ".py":
-        from lagrade.answers import zygote
+        from lagrade.jail import zygote
 
         zygote.current()  # started by the console script already (lagrade.launch), or now: it imports sympy
     dirs = tuple(Path(d) for d in problem_dirs)

@@ -9,7 +9,7 @@ import sys
 def run() -> None:
     args = sys.argv[1:]
     if args[:1] == ["check"] and any(a.endswith(".py") for a in args[1:]):
-        from lagrade.answers import zygote
+        from lagrade.jail import zygote
 
         zygote.start()  # 0.2 s earlier than the check command could (importing the CLI takes that)
     from lagrade.cli import run as cli_run

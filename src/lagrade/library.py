@@ -32,7 +32,7 @@ def data_root() -> Path | None:
     entry-point name), else None. Found without importing anything: a data package runs no code.
 
     One root, never several: the answer jail hides exactly ``reference_dir()`` and ``problem_dirs()``
-    (:func:`lagrade.answers.child.secret_dirs`), so a second root's references would be readable
+    (:func:`lagrade.jail.child.secret_dirs`), so a second root's references would be readable
     from site-packages. Other courses' problems come with ``--problems DIR``."""
     import importlib.util
     from importlib.metadata import entry_points

@@ -5,7 +5,7 @@ sits below both (the derivation never imports the answer loaders). The text is r
 and only arithmetic, a few functions and literals are interpreted; nothing is ``eval``-ed or
 ``sympify``-ed, and sizes, nesting and exact powers are bounded before sympy gets to work (the
 limits below are shared with the rebuilding of a sandbox child's values,
-:mod:`lagrade.answers.rebuild`). Conventions, chosen to fit mechanics notation:
+:mod:`lagrade.jail.rebuild`). Conventions, chosen to fit mechanics notation:
 
 * ``t`` is time; ``pi`` is the constant pi.  ``e``, ``E`` and ``I`` are *ordinary symbols*
   (energies, moments of inertia...); write ``exp(1)`` for Euler's number.

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from lagrade.answers.value_key import value_key
+from lagrade.reading.value_key import value_key
 from lagrade.result import PartResult
 
 #: verdicts kept per memo, the oldest dropped first: a class's distinct values are a few per part

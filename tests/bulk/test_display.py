@@ -153,7 +153,7 @@ def test_the_same_text_is_rendered_once():
 def test_a_value_equal_to_one_shown_before_gets_its_own_text(expr):
     """The text is kept by the value: an equal value built anew (as the next file's is) must print
     as str() prints it, whatever was shown before."""
-    from lagrade.answers.rebuild import rebuild_srepr
+    from lagrade.jail.rebuild import rebuild_srepr
 
     huge = [f for f in expr.atoms(sp.Float) if f != 0 and not 1e-300 < abs(f) < 1e300]
     assume(not huge)

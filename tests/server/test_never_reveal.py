@@ -28,7 +28,7 @@ from serverkit import (
     toml_answer,
 )
 
-from lagrade.answers.load import load_answer
+from lagrade.reading.load import load_answer
 from lagrade.library import load_problem
 from lagrade.server.tokens import csrf_token, issue
 

@@ -67,7 +67,7 @@ class Limits(BaseModel):
     grading_seconds: float = Field(GRADING_SECONDS, gt=0)
 
     def sandbox(self):
-        from lagrade.answers.sandbox import SandboxLimits
+        from lagrade.jail.sandbox import SandboxLimits
 
         return SandboxLimits(cpu_seconds=self.cpu_seconds, wall_seconds=self.wall_seconds,
                              memory_mb=self.memory_mb)

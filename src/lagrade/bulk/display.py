@@ -22,7 +22,7 @@ from sympy.printing.mathml import MathMLPresentationPrinter
 from sympy.printing.printer import Printer
 from sympy.printing.str import StrPrinter
 
-from lagrade.answers.value_key import value_key
+from lagrade.reading.value_key import value_key
 
 #: answers whose text is longer get no MathML (and their text is cut): a report is read, not parsed
 MATHML_MAX_CHARS = 4000

@@ -40,7 +40,7 @@ class Grader:
     def __init__(self, problems: dict[str, str], directory: str | None = None) -> None:
         """``directory``: where the problems and each job's file go (made here if not given); the
         coordinator makes it, so that it can remove it when it has to kill this process."""
-        from lagrade.answers import zygote
+        from lagrade.jail import zygote
         from lagrade.grade import references
         from lagrade.library import load_problem
         from lagrade.verdict_memo import VerdictMemo
@@ -65,7 +65,7 @@ class Grader:
         self.jail = ",".join(self.zygote.active) or "none"
 
     def close(self) -> None:
-        from lagrade.answers import zygote
+        from lagrade.jail import zygote
         from lagrade.grade import keep_references
 
         zygote.stop()
@@ -74,8 +74,8 @@ class Grader:
         shutil.rmtree(self.dir, ignore_errors=True)
 
     def grade(self, job: dict[str, Any]) -> dict[str, Any]:
-        from lagrade.answers.load import load_answer
-        from lagrade.answers.sandbox import SandboxLimits
+        from lagrade.reading.load import load_answer
+        from lagrade.jail.sandbox import SandboxLimits
         from lagrade.bulk.display import show
         from lagrade.credit import Credit
         from lagrade.grade import GradingOutOfTime, cpu_time_bound, grade_values
@@ -133,7 +133,7 @@ def _warm_up(problem, memo=None) -> None:
     (the children run in the zygote, which never sees it). Grading it compiles and integrates what
     the answers will share, and gives the ``memo`` the reference's own verdicts (many answers share
     some of its values)."""
-    from lagrade.answers.load import load_answer
+    from lagrade.reading.load import load_answer
     from lagrade.grade import grade_values
     from lagrade.library import reference_dir
 
@@ -192,7 +192,7 @@ def failed_result(job: dict[str, Any], parts: list[tuple[str, float]], status: s
 def serve(conn: Any, parent_death_signal: bool = True) -> None:
     """The grader process's loop: warm up from the first message, then grade until EOF."""
     if parent_death_signal:
-        from lagrade.answers.jail import die_with_parent
+        from lagrade.jail.kernel import die_with_parent
 
         die_with_parent()
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the coordinator's business

@@ -126,12 +126,12 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
 
 def _require_jail(unsafe: bool, err) -> None:
     """Refuse to run a class's files where the OS jail cannot be built, unless told they are trusted."""
-    from lagrade.answers import jail, zygote
+    from lagrade.jail import kernel, zygote
 
     try:
         probe = zygote.Zygote()
         try:
-            lacking = jail.missing_minimum(probe.hello()["active"])
+            lacking = kernel.missing_minimum(probe.hello()["active"])
         finally:
             probe.close()
     except OSError as exc:

@@ -30,7 +30,7 @@ def cache() -> None:
 def build(ids: tuple[str, ...], problems_dir: tuple[Path, ...]) -> None:
     """Build the entries of IDS (default: every problem)."""
     from lagrade import cache as store
-    from lagrade.answers.load import load_answer
+    from lagrade.reading.load import load_answer
     from lagrade.grade import grade_values, keep_references, references
     from lagrade.library import load_problem, problem_ids, reference_dir
     from lagrade.spec import SpecError

@@ -43,7 +43,7 @@ L = 0
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 def doctor(as_json: bool) -> None:
     """Which layers of the answer jail are active on this machine, and a probe that they hold."""
-    from lagrade.answers import jail, zygote
+    from lagrade.jail import kernel, zygote
     from lagrade.library import reference_dir
 
     if not sys.platform.startswith("linux"):
@@ -59,15 +59,15 @@ def doctor(as_json: bool) -> None:
     finally:
         zygote.stop()
     active, inactive = hello["active"], hello["inactive"]
-    lacking = jail.missing_minimum(active)
+    lacking = kernel.missing_minimum(active)
     if as_json:
         click.echo(json.dumps({"os": f"Linux {platform.release()}", "euid": os.geteuid(), "active": active,
                                "inactive": inactive, "probe": probe, "can_grade": lacking is None}))
     else:
         click.echo(f"The answer jail on Linux {platform.release()}, running as uid {os.geteuid()}:")
-        for layer in jail.LAYERS:
+        for layer in kernel.LAYERS:
             state = "active" if layer in active else "MISSING"
-            detail = jail.DESCRIPTIONS[layer] if layer in active else inactive.get(layer, "not requested")
+            detail = kernel.DESCRIPTIONS[layer] if layer in active else inactive.get(layer, "not requested")
             click.echo(f"  {layer:<13} {state:<8} {detail}")
         click.echo("")
         if "error" in probe:
@@ -88,7 +88,7 @@ def doctor(as_json: bool) -> None:
 
 def _run_probe(reference: str) -> dict:
     """Run the probe answer in the jail, with the tripwires off (it is lagrade's own code)."""
-    from lagrade.answers import sandbox
+    from lagrade.jail import sandbox
 
     source = _PROBE.replace("REFERENCE", repr(reference)).replace("GRADER", str(os.getpid()))
     with tempfile.TemporaryDirectory() as tmp:

@@ -1,11 +1,11 @@
 """What runs in the clean zygote and in each child it forks: the answer's side of the sandbox.
 
-The child confines itself with the kernel's layers (:mod:`lagrade.answers.jail`) before it reads the
-answer, then runs it under the tripwires (a static screen, :mod:`lagrade.answers.screen`,
+The child confines itself with the kernel's layers (:mod:`lagrade.jail.kernel`) before it reads the
+answer, then runs it under the tripwires (a static screen, :mod:`lagrade.jail.screen`,
 restricted builtins and an audit hook), which exist to tell a student in plain words what an answer
 may not do; they are not the defence. It sends its values back as JSON (:class:`ChildReport`),
-which the grader validates and rebuilds from an allowlist (:mod:`lagrade.answers.rebuild`). This
-module never imports the grader's side (:mod:`lagrade.answers.sandbox`): nothing here needs it.
+which the grader validates and rebuilds from an allowlist (:mod:`lagrade.jail.rebuild`). This
+module never imports the grader's side (:mod:`lagrade.jail.sandbox`): nothing here needs it.
 """
 
 
@@ -31,8 +31,8 @@ import sympy as sp
 from pydantic import BaseModel, ConfigDict
 
 import lagrade.answer
-from lagrade.answers.rebuild import EncodedValue, expr_nodes, srepr_text
-from lagrade.answers.screen import (
+from lagrade.jail.rebuild import EncodedValue, expr_nodes, srepr_text
+from lagrade.jail.screen import (
     ALLOWED_MODULES_TEXT,
     FORBIDDEN_ATTRIBUTES,
     AnswerProblem,
@@ -101,12 +101,12 @@ def prepare_zygote() -> None:
     import sympy.sets.setexpr  # noqa: F401
     import sympy.tensor.tensor  # noqa: F401
 
-    from lagrade.answers import jail
+    from lagrade.jail import kernel
 
     # libc is found once here: ctypes' find_library runs ldconfig in a subprocess, which a child,
     # inside the jail, would try on every answer (and a child whose zygote enters no namespace
     # would otherwise load it first)
-    for warm in (jail._libc, jail.landlock_available, jail.seccomp_available, _readable_dirs, secret_dirs):
+    for warm in (kernel._libc, kernel.landlock_available, kernel.seccomp_available, _readable_dirs, secret_dirs):
         warm()
 
 
@@ -122,10 +122,10 @@ JAIL_FAILED = 72
 
 def child_main(child: dict[str, Any], workdir: str, result_w: int, out_w: int, *, layers: Sequence[str],
                uid: int | None, readable: Sequence[str], vm_size: int) -> None:
-    """The forked child: confine itself (`lagrade.answers.jail`), then run the answer. Never returns.
+    """The forked child: confine itself (`lagrade.jail.kernel`), then run the answer. Never returns.
 
     If a layer the zygote reported active cannot be applied, the answer is not run at all."""
-    from lagrade.answers import jail
+    from lagrade.jail import kernel
 
     code = 70
     try:
@@ -142,7 +142,7 @@ def child_main(child: dict[str, Any], workdir: str, result_w: int, out_w: int, *
         sys.path[:] = [p for p in sys.path if p and _under(os.path.realpath(p), allowed)]
         if "limits" in layers:
             _set_limits(limits, vm_size)
-        failed = jail.confine(layers, uid, readable)
+        failed = kernel.confine(layers, uid, readable)
         if failed:
             code = JAIL_FAILED
             os.write(2, f"the jail could not be built: {'; '.join(f'{k}: {v}' for k, v in failed.items())}\n".encode())

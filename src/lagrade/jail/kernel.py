@@ -1,7 +1,7 @@
 """The operating system's barrier around a student's code, in layers that each hold on their own.
 
 An answer file is hostile code, and Python cannot contain Python: the screen and the audit hook
-(:mod:`lagrade.answers.sandbox`) are tripwires that give students clear messages, never the
+(:mod:`lagrade.jail.sandbox`) are tripwires that give students clear messages, never the
 defence. The defence is what the kernel enforces on the process that runs the file:
 
 ``uid``           another uid than the grader's (a fresh unprivileged uid per answer when lagrade
@@ -19,7 +19,7 @@ defence. The defence is what the kernel enforces on the process that runs the fi
 ``seccomp``       a system-call allowlist: no execve, ptrace, sockets, signals, mounts, or opening a
                   file for writing.
 
-The namespaces are entered once by the clean zygote (:mod:`lagrade.answers.zygote`), which every
+The namespaces are entered once by the clean zygote (:mod:`lagrade.jail.zygote`), which every
 child is forked from; the rest is applied by each child on itself before it reads the answer.
 Each layer is probed and reported (`lagrade doctor`); one that the machine does not allow is
 reported inactive, never silently assumed.

@@ -1,8 +1,8 @@
 """Run a student's ``answer.py`` in a jailed child and get its values back as data: the grader's side.
 
 The barrier is the operating system: the child is forked from the clean zygote
-(:mod:`lagrade.answers.zygote`, which never held a reference) and confines itself with the kernel's
-layers (:mod:`lagrade.answers.jail`) before it reads the answer (:mod:`lagrade.answers.child` is
+(:mod:`lagrade.jail.zygote`, which never held a reference) and confines itself with the kernel's
+layers (:mod:`lagrade.jail.kernel`) before it reads the answer (:mod:`lagrade.jail.child` is
 what runs there). This module screens the file, asks the zygote for a child, and collects the
 outcome: nothing the child sends is unpickled or evaluated, and a report without the run's token
 was not written by our child code.
@@ -23,14 +23,14 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ValidationError
 
-from lagrade.answers.rebuild import EncodedValue
-from lagrade.answers.screen import (
+from lagrade.jail.rebuild import EncodedValue
+from lagrade.jail.screen import (
     MAX_SOURCE_BYTES,
     AnswerProblem,
     screen_source,
 )
 
-from lagrade.answers.child import JAIL_FAILED, STDOUT_KEEP, ChildReport, SandboxLimits, reap_child
+from lagrade.jail.child import JAIL_FAILED, STDOUT_KEEP, ChildReport, SandboxLimits, reap_child
 
 __all__ = ["AnswerProblem", "EncodedValue", "SandboxLimits", "SandboxOutcome", "run_answer_file"]
 
@@ -86,7 +86,7 @@ def start_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits =
     if problems:
         syntax = any(p.message.startswith(("syntax error", "cannot parse")) for p in problems)
         return RunningAnswer(SandboxOutcome(status="error" if syntax else "rejected", problems=problems))
-    from lagrade.answers import zygote
+    from lagrade.jail import zygote
 
     return RunningAnswer(finish=_start_in_jail(zygote.current(), source, path, list(wanted), limits))
 
@@ -103,7 +103,7 @@ def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: Sand
     when the answer is read, and the caller meanwhile loads the references on the other core."""
     import threading
 
-    from lagrade.answers.zygote import ZygoteError
+    from lagrade.jail.zygote import ZygoteError
 
     name = path.name
     token = secrets.token_hex(16)  # a report without it was not written by our child code

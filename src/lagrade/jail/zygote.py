@@ -3,9 +3,9 @@
 A child forked from a grader holds in its own memory everything the grader held: the problem
 files, the derived references, the graded reference solution. So the children are forked from a
 process that never held any of it: the zygote is a fresh interpreter (``python -m
-lagrade.answers.zygote``, started with an empty environment and no descriptor but its socket)
+lagrade.jail.zygote``, started with an empty environment and no descriptor but its socket)
 that imports sympy and the sandbox's child code, warms sympy with neutral work only, enters the
-jail's namespaces (:mod:`lagrade.answers.jail`) and then only forks. A child still starts in a
+jail's namespaces (:mod:`lagrade.jail.kernel`) and then only forks. A child still starts in a
 millisecond or two, not in the second an import of sympy takes.
 
 The grader talks to it over a socket pair in JSON (never pickle: nothing the zygote says is
@@ -29,7 +29,7 @@ import tempfile
 import threading
 from typing import Any
 
-from lagrade.answers import jail
+from lagrade.jail import kernel
 
 __all__ = ["Zygote", "current", "start", "stop"]
 
@@ -45,7 +45,7 @@ class ZygoteError(OSError):
 class Zygote:
     """The grader's handle on its zygote. ``layers``: the jail layers to build (all by default)."""
 
-    def __init__(self, layers: tuple[str, ...] = jail.LAYERS, warm: bool = False, directory: str | None = None) -> None:
+    def __init__(self, layers: tuple[str, ...] = kernel.LAYERS, warm: bool = False, directory: str | None = None) -> None:
         """``directory``: where the jail's (empty) mount point is made; a grader gives its own folder,
         which its coordinator removes even when it had to kill the grader."""
         ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
@@ -56,7 +56,7 @@ class Zygote:
         for name in ("PYTHONPATH", "LAGRADE_CACHE", "LAGRADE_PROBLEMS", "XDG_CACHE_HOME", "HOME"):
             if os.environ.get(name):
                 env[name] = os.environ[name]
-        args = [sys.executable, "-m", "lagrade.answers.zygote", str(theirs.fileno()), ",".join(layers),
+        args = [sys.executable, "-m", "lagrade.jail.zygote", str(theirs.fileno()), ",".join(layers),
                 "warm" if warm else "cold", self.staging or "-"]
         debug = bool(os.environ.get("LAGRADE_DEBUG"))
         try:
@@ -103,7 +103,7 @@ class Zygote:
         return reply
 
     def spawn(self, child: dict[str, Any], fds: tuple[int, int]) -> int:
-        """Fork a child running ``child`` (`lagrade.answers.child.child_main`'s arguments), writing
+        """Fork a child running ``child`` (`lagrade.jail.child.child_main`'s arguments), writing
         its report and output to ``fds``; its pid (in the zygote's PID namespace)."""
         return int(self.request({"op": "spawn", "child": child}, fds)["pid"])
 
@@ -132,7 +132,7 @@ _current: Zygote | None = None
 _current_pid = -1
 
 
-def start(layers: tuple[str, ...] = jail.LAYERS, warm: bool = False, directory: str | None = None) -> Zygote:
+def start(layers: tuple[str, ...] = kernel.LAYERS, warm: bool = False, directory: str | None = None) -> Zygote:
     """Start this process's zygote (replacing any); it is ready in the background while the caller
     loads problems and derives references (the two share nothing)."""
     global _current, _current_pid
@@ -194,27 +194,27 @@ def _recv(sock: socket.socket) -> tuple[Any, list[int]]:
 # =========================================================================== in the zygote
 
 def _main(argv: list[str]) -> None:
-    """``python -m lagrade.answers.zygote FD LAYERS warm|cold STAGING``."""
+    """``python -m lagrade.jail.zygote FD LAYERS warm|cold STAGING``."""
     fd, wanted, warm, staging = int(argv[0]), set(filter(None, argv[1].split(","))), argv[2] == "warm", argv[3]
-    jail.die_with_parent()
+    kernel.die_with_parent()
     sock = socket.socket(fileno=fd)
-    from lagrade.answers import child as child_code
+    from lagrade.jail import child as child_code
 
     child_code.prepare_zygote()
     if warm:
         _warm_sympy()
     inactive: dict[str, str] = {}
-    if "landlock" in wanted and (why := jail.landlock_available()):
+    if "landlock" in wanted and (why := kernel.landlock_available()):
         inactive["landlock"] = why
-    if "seccomp" in wanted and (why := jail.seccomp_available()):
+    if "seccomp" in wanted and (why := kernel.seccomp_available()):
         inactive["seccomp"] = why
     if not sys.platform.startswith("linux"):
         inactive.update({k: "not Linux: no OS jail" for k in wanted & {"uid", "no_new_privs", "landlock", "seccomp"}})
-    allowed, hidden = jail.jail_dirs()
+    allowed, hidden = kernel.jail_dirs()
     status_fd = _open_status()
-    inactive.update(jail.enter_namespaces(wanted & {"mount", "pid", "network", "uid"}))
-    jail.in_user_namespace()  # read (and kept) while /proc is still there: the jail has none
-    if "uid" in wanted and "uid" not in inactive and os.geteuid() != 0 and not jail.in_user_namespace():
+    inactive.update(kernel.enter_namespaces(wanted & {"mount", "pid", "network", "uid"}))
+    kernel.in_user_namespace()  # read (and kept) while /proc is still there: the jail has none
+    if "uid" in wanted and "uid" not in inactive and os.geteuid() != 0 and not kernel.in_user_namespace():
         inactive["uid"] = "not root and no user namespace"
     if "pid" in wanted and "pid" not in inactive:
         pid = os.fork()  # the next process is PID 1 of the new namespace: it is the zygote from here on
@@ -222,20 +222,20 @@ def _main(argv: list[str]) -> None:
             sock.close()
             _, status = os.waitpid(pid, 0)
             os._exit(os.waitstatus_to_exitcode(status) & 0xFF)
-        jail.die_with_parent(leave_if_orphaned=False)
+        kernel.die_with_parent(leave_if_orphaned=False)
     try:
         if "mount" in wanted and "mount" not in inactive:
-            jail.build_root(allowed, hidden, child_code.secret_dirs(), staging)
+            kernel.build_root(allowed, hidden, child_code.secret_dirs(), staging)
         elif "pid" in wanted and "pid" not in inactive:
-            jail.mount_proc()
+            kernel.mount_proc()
     except OSError as exc:
         inactive["mount"] = f"could not build the jail's file tree ({exc})"
         if "pid" in wanted:
             inactive["pid"] = "needs the mount namespace for its own /proc"
-    active = [k for k in jail.LAYERS if k in wanted and k not in inactive]
+    active = [k for k in kernel.LAYERS if k in wanted and k not in inactive]
     # Landlock's grants: inside the mount namespace the covers hide site-packages and the secrets, so
     # whole directories; without it, around them
-    grants = allowed if "mount" in active else jail.landlock_grants(allowed, [*hidden, *child_code.secret_dirs()])
+    grants = allowed if "mount" in active else kernel.landlock_grants(allowed, [*hidden, *child_code.secret_dirs()])
     _send(sock, {"active": active, "inactive": inactive})
     _serve(sock, active, grants, status_fd)
 
@@ -260,13 +260,13 @@ def _vm_size(status_fd: int | None) -> int:
 
 
 def _serve(sock: socket.socket, active: list[str], readable: list[str], status_fd: int | None) -> None:
-    from lagrade.answers import child as child_code
+    from lagrade.jail import child as child_code
 
     workdirs: dict[int, str] = {}
     done: dict[int, tuple[int, float]] = {}  # reaped before the grader asked
     count = 0
     inside = "mount" in active
-    as_root = os.geteuid() == 0 and not jail.in_user_namespace()
+    as_root = os.geteuid() == 0 and not kernel.in_user_namespace()
     while True:
         try:
             request, fds = _recv(sock)
@@ -276,8 +276,8 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
             if request.get("op") == "spawn":
                 _reap_finished(done, workdirs)
                 count += 1
-                uid = jail.JAIL_UID_BASE + count % 1_000_000 if "uid" in active and as_root else None
-                workdir = f"{jail.JAIL_WORK}/{count}" if inside else tempfile.mkdtemp(prefix="lagrade-answer-")
+                uid = kernel.JAIL_UID_BASE + count % 1_000_000 if "uid" in active and as_root else None
+                workdir = f"{kernel.JAIL_WORK}/{count}" if inside else tempfile.mkdtemp(prefix="lagrade-answer-")
                 if inside:
                     os.mkdir(workdir, 0o700)
                 if uid is not None:

@@ -35,8 +35,8 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.answers import latex_subset
-from lagrade.answers.latex_subset import GREEK
+from lagrade.reading import latex_subset
+from lagrade.reading.latex_subset import GREEK
 from lagrade.notation import (
     MAX_DERIVATIVE_ORDER,
     RebuildError,

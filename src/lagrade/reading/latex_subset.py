@@ -23,7 +23,7 @@ from typing import Any
 
 import sympy as sp
 
-#: the Greek letters LaTeX answers may use (:mod:`lagrade.answers.latex` reads them too)
+#: the Greek letters LaTeX answers may use (:mod:`lagrade.reading.latex` reads them too)
 GREEK = set(
     "alpha beta gamma delta epsilon varepsilon zeta eta theta vartheta iota kappa varkappa lambda mu nu xi "
     "pi varpi rho varrho sigma varsigma tau upsilon phi varphi chi psi omega "

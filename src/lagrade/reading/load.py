@@ -11,9 +11,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from lagrade.answers.rebuild import RebuildError, decode_value
-from lagrade.answers.screen import AnswerProblem
-from lagrade.answers.text import load_toml_answer
+from lagrade.jail.rebuild import RebuildError, decode_value
+from lagrade.jail.screen import AnswerProblem
+from lagrade.reading.text import load_toml_answer
 from lagrade.spec import Problem
 
 
@@ -58,7 +58,7 @@ def start_loading(path: Path, problem: Problem, limits=None) -> Callable[[], Loa
     if path.suffix == ".toml":
         return lambda: _load_toml(path, problem, names)
     if path.suffix == ".py":
-        from lagrade.answers.sandbox import SandboxLimits, start_answer_file
+        from lagrade.jail.sandbox import SandboxLimits, start_answer_file
 
         running = start_answer_file(path, list(names), limits or SandboxLimits())
         return lambda: _finish_py(path, problem, names, running.wait())

@@ -5,7 +5,7 @@ Each value is read in the notation of problem files (:mod:`lagrade.notation`: ``
 
 In ``answer.toml`` a string value (or list item, or dict value) is read as **LaTeX** instead when
 it contains a control sequence (a backslash followed by a letter: ``\\frac``, ``\\dot``,
-``\\theta``...) or is wrapped in ``$...$``; see ``lagrade.answers.latex`` (``\\dot``, ``\\ddot`` and
+``\\theta``...) or is wrapped in ``$...$``; see ``lagrade.reading.latex`` (``\\dot``, ``\\ddot`` and
 primes are time derivatives, ``=`` makes an equation, ``,`` separates the items of a list).
 Plain text never contains a backslash, so nothing written for ``parse_math`` changes meaning.
 """
@@ -20,7 +20,7 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.answers.screen import AnswerProblem
+from lagrade.jail.screen import AnswerProblem
 from lagrade.notation import YES_NO, TextAnswerError, parse_math  # noqa: F401  (re-exported: answers read with it)
 
 
@@ -75,7 +75,7 @@ def _strings(raw: Any):
 
 
 def _looks_latex(text: str) -> bool:
-    from lagrade.answers.latex import is_latex
+    from lagrade.reading.latex import is_latex
 
     return is_latex(text)
 
@@ -84,7 +84,7 @@ def _parse_text(text: str, coordinates: Sequence[str], known: list[str] | None,
                 functions: Mapping[str, int] | None = None) -> Any:
     """One TOML string: LaTeX (a ``\\command`` or ``$...$``) or plain text. Text that is not well
     formed as plain text but reads as LaTeX is LaTeX (``x_0 + v_{x0} t``, with no backslash)."""
-    from lagrade.answers.latex import is_latex, parse_latex_answer
+    from lagrade.reading.latex import is_latex, parse_latex_answer
 
     if is_latex(text):
         return parse_latex_answer(text, coordinates, known, functions)

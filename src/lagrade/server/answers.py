@@ -3,7 +3,7 @@
 A JSON answer (``{"L": "...", "eom": ["...", "..."], "a": {"m1": "..."}}``) is written as the
 ``answer.toml`` a student could have uploaded, canonically (sorted keys), so that it is graded by
 the same path and the same content is the same attempt. Nothing here runs student code: text is
-parsed by :mod:`lagrade.answers.text` (``ast``, no eval); an ``answer.py`` only ever runs in the jail.
+parsed by :mod:`lagrade.reading.text` (``ast``, no eval); an ``answer.py`` only ever runs in the jail.
 """
 
 from __future__ import annotations
@@ -61,7 +61,7 @@ def to_toml(answer: dict) -> bytes:
 def preview(problem, part: str, value) -> dict:
     """How the grader will read ``value`` as ``part``: sympy text and presentation MathML, or the
     one-line error ``answer.toml`` would give. Parsed exactly as that answer.toml line would be."""
-    from lagrade.answers.load import load_answer
+    from lagrade.reading.load import load_answer
     from lagrade.bulk.display import show
 
     names = {p.name for p in problem.parts}
@@ -69,7 +69,7 @@ def preview(problem, part: str, value) -> dict:
         return {"part": part, "error": f"problem {problem.id} has no part '{part}' (its parts: {', '.join(sorted(names))})"}
     if len(json.dumps(value)) > MAX_PREVIEW_CHARS:
         return {"part": part, "error": f"longer than {MAX_PREVIEW_CHARS} characters; no preview (a check still reads it)"}
-    from lagrade.answers.latex import is_latex
+    from lagrade.reading.latex import is_latex
 
     latex = sum(len(t) for t in _texts(value) if is_latex(t))
     if latex > MAX_PREVIEW_LATEX:

@@ -50,7 +50,7 @@ def check_json(result: dict[str, Any], problem=None) -> dict[str, Any]:
     student's own value, as terminal text and MathML) and how the file ran.
 
     The graders keep each value as sympy text (the gradebook's); read back here without eval
-    (:func:`lagrade.answers.text.parse_math`), it gives the LaTeX ``read_as`` of ``check --json`` and
+    (:func:`lagrade.reading.text.parse_math`), it gives the LaTeX ``read_as`` of ``check --json`` and
     the terminal text of a local check. A value that does not read back keeps its sympy text."""
     checked = CheckResult(problem=result["problem"], score=result["score"], max_score=result["max_score"],
                           parts=[PartResult.model_validate(p) for p in result["parts"]],
