@@ -181,6 +181,8 @@ class DOP853:
         self.T = np.empty((N_STAGES_EXTENDED, K))  # stage times
         self.rows = [np.concatenate(([1.0], A[s, :s])) for s in range(N_STAGES_EXTENDED)]
         self.row_new = np.concatenate(([1.0], B))
+        # stage s as (row, the Z it reads, its times, the Z it writes): views made once, not per step
+        self.plan = [(self.rows[s], self.Zf[:s + 1], self.T[s], self.Z[s + 1]) for s in range(N_STAGES_EXTENDED)]
         self.stage_f, self.y_new_f = np.empty(dim * K), np.empty(dim * K)
         self.stage, self.y_new = self.stage_f.reshape(dim, K), self.y_new_f.reshape(dim, K)
         self.Pf = np.empty((INTERPOLATOR_POWER, dim * K))  # every column's dense output (monomials)
@@ -224,11 +226,11 @@ class DOP853:
         np.subtract(self.t_new, t, out=h)  # 0 for the columns that do not move
         np.multiply(self.F0, h, out=Z[1])
         np.add(C[:, None] * h, t, out=self.T)
-        Zf, fun, rows, T, stage, stage_f = self.Zf, self.fun, self.rows, self.T, self.stage, self.stage_f
-        for s in range(1, N_STAGES):  # the hot loop: 11 products and calls per attempt
-            _dot(rows[s], Zf[:s + 1], out=stage_f)
-            np.multiply(fun(T[s], stage), h, out=Z[s + 1])
-        _dot(self.row_new, Zf[:N_STAGES + 1], out=self.y_new_f)
+        fun, stage, stage_f, multiply = self.fun, self.stage, self.stage_f, np.multiply
+        for row, Zs, Ts, Z_next in self.plan[1:N_STAGES]:  # the hot loop: 11 products and calls per attempt
+            _dot(row, Zs, out=stage_f)
+            multiply(fun(Ts, stage), h, out=Z_next)
+        _dot(self.row_new, self.plan[N_STAGES][1], out=self.y_new_f)
         np.copyto(self.f_new, fun(self.t_new, self.y_new))  # fun may reuse its buffers
         self.nfev += N_STAGES
         self.watch(self.t_new, self.f_new)
@@ -238,7 +240,7 @@ class DOP853:
         # DOP853's error norm per column (h is already in the stages); nothing mixes columns, so a
         # NaN in one column rejects only that column's step
         self.absa_new = np.abs(self.y_new) + self.a_r
-        err = _dot(_E, Zf[1:N_STAGES + 2]).reshape(2, self.dim, self.K)
+        err = _dot(_E, self.Zf[1:N_STAGES + 2]).reshape(2, self.dim, self.K)
         err /= np.maximum(self.absa, self.absa_new)
         colsum = np.add.reduce(np.square(err), axis=1)  # (2, K); not a product with a 0/1 matrix: 0 * NaN
         den = colsum[0] + 0.01 * colsum[1]
@@ -260,9 +262,9 @@ class DOP853:
         if not self.dense_ready:
             if self.nfev + 3 > self.limit:
                 raise OverBudget
-            for s in range(N_STAGES + 1, N_STAGES_EXTENDED):
-                _dot(self.rows[s], self.Zf[:s + 1], out=self.stage_f)
-                np.multiply(self._f(self.T[s], self.stage), self.h, out=self.Z[s + 1])
+            for row, Zs, Ts, Z_next in self.plan[N_STAGES + 1:]:
+                _dot(row, Zs, out=self.stage_f)
+                np.multiply(self._f(Ts, self.stage), self.h, out=Z_next)
             _dot(_W, self.Zf[1:], out=self.Pf)
             self.dense_ready = True
         return self.P
