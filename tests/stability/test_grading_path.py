@@ -12,7 +12,10 @@ Bounds are stated per preset, about three times what this integrator measures (d
 - harmonic oscillator, 1000 periods sampled 7 times a period (the samples fall inside steps: the
   dense output is what is compared), against A cos(wt) + v0/w sin(wt);
 - contact loss from the top of a sphere (12.4): the state where the multiplier vanishes, against
-  cos(theta) = 2/3 cos(theta0) at release from rest, and the stop time against the quadrature.
+  cos(theta) = 2/3 cos(theta0) at release from rest, and the stop time against the quadrature;
+- what accuracy costs: the evaluations a batch needs are those scipy's DOP853 needs for its hardest
+  trajectory alone (a step-size control that grows or shrinks steps wrongly stays accurate, since the
+  error test still rejects, but costs more).
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from scipy.integrate import DOP853 as ScipyDOP853
 from scipy.integrate import quad
 from scipy.special import ellipj, ellipk
 
@@ -103,6 +107,33 @@ def test_dense_output_between_steps_matches_the_oscillator(preset, steps):
     print(f"\n{preset}: oscillator, 1000 periods, error/amplitude {error:.3g} (bound {BOUNDS[preset][2]:g}), "
           f"{run.rhs_evals} evaluations")
     assert error < BOUNDS[preset][2]
+
+
+@pytest.mark.parametrize("preset", list(BOUNDS))
+def test_a_batch_costs_what_scipys_dop853_costs_its_hardest_trajectory(preset, steps):
+    """12.43's pendulum at five amplitudes over 20 periods of the largest swing: the batch's evaluations
+    against scipy's DOP853 stepping each trajectory alone on the same compiled rates and tolerances."""
+    mech = mechanics("12.43")
+    A = np.array([0.1, 0.7, 1.5, 2.5, 3.0])
+    P = params(mech, len(A), m=1.0, l=1.0, g=9.8)
+    horizon = 20 * 4 * ellipk(np.sin(A.max() / 2) ** 2) / np.sqrt(9.8)
+    acc = _acc(preset)
+    y0 = np.array([A, np.zeros(len(A))])
+    run = integrate(mech.lagrange_rates(P), y0, horizon, acc, t_eval=np.array([0.0, horizon]))
+    assert run.ok, run.message
+    assert steps, "the grading path's integrator did not step"
+    alone = []
+    for k in range(len(A)):
+        rates_k = mech.lagrange_rates(P[:, k:k + 1])
+        solver = ScipyDOP853(lambda t, y, r=rates_k: r(t, y[:, None])[:, 0], 0.0, y0[:, k], horizon,
+                             rtol=acc.rtol, atol=acc.atol)
+        while solver.status == "running":
+            solver.step()
+        assert solver.status == "finished"
+        alone.append(solver.nfev)
+    print(f"\n{preset}: batch {run.rhs_evals} evaluations; scipy's DOP853 alone {alone}")
+    assert max(alone) > 500
+    assert abs(run.rhs_evals - max(alone)) <= 0.02 * max(alone), (run.rhs_evals, alone)
 
 
 @pytest.mark.parametrize("preset", ["default", "strict"])
