@@ -264,3 +264,60 @@ def test_a_stuck_block_breaks_away_when_the_drive_exceeds_static_friction():
     # breakaway at k A sin(w t) = mu m g: sin t = 0.6
     assert breaks and breaks[0] == pytest.approx(math.asin(0.6), abs=BOUND)
     assert np.all(np.abs(run.y[0, 0, run.t < breaks[0] - 1e-6]) < 1e-9)   # held at rest until then
+
+
+class _TwoContacts:
+    """Two dry-friction contacts on two blocks (x1, x2), as a `Switching` with a hand-written field:
+    F = [v1, v2, -s1 - x1, -s2 - x2 + c] for branches s1, s2 and a per-trajectory constant c."""
+
+    @staticmethod
+    def model(c: np.ndarray):
+        from lagrade.scene_model import Branches, Switching
+
+        class Model(Switching):
+            dim = 4
+
+            def _field(self, tt, Y, sigma):
+                return np.array([Y[2], Y[3], -sigma[0] - Y[0], -sigma[1] - Y[1] + c])
+
+            def _switch_values(self, tt, Y):
+                return Y[2:4]
+
+            def _switch_gradient(self, tt, Y):
+                G = np.zeros((2, 4, Y.shape[1]))
+                G[0, 2], G[1, 3] = 1.0, 1.0
+                return G
+
+        model = Model()
+        model.branches = Branches([sp.Symbol("v1"), sp.Symbol("v2")], np.zeros((2, len(c))), [True, True],
+                                  [None, None])
+        return model
+
+
+def test_a_trajectory_whose_sliding_field_is_undefined_loses_only_itself():
+    """Both contacts stuck in both trajectories; trajectory 1's equations give NaN there. Its field is
+    NaN (its step is rejected, as any NaN); trajectory 0 slides as Filippov's rule says."""
+    model = _TwoContacts.model(np.array([0.5, np.nan]))
+    Y = np.array([[0.2, 0.2], [0.1, 0.1], [0.0, 0.0], [0.0, 0.0]])
+    F = model.field(0.0, Y, np.zeros((2, 2)))
+    assert np.isnan(F[:, 1]).any()
+    # stuck: both velocities stay 0 (static friction holds: |x1| <= 1, |x2 - 0.5| <= 1)
+    assert np.allclose(F[:, 0], [0.0, 0.0, 0.0, 0.0])
+
+
+def test_a_students_switching_arguments_are_merged_without_simplify():
+    """Switching arguments that are one function in two forms share one branch; a form built to make
+    `simplify` slow (measured: 19.7 s at n = 120) is read in a moment."""
+    import time
+
+    from lagrade.scene_model import branch_form
+
+    vv, ww, xx = sp.symbols("v w x")
+    _, args, _, _ = branch_form([sp.sign(vv * (1 + xx) ** 2) + sp.sign(vv + 2 * vv * xx + vv * xx ** 2)], {vv, ww})
+    assert len(args) == 1
+    n = 120
+    start = time.process_time()
+    _, args, _, _ = branch_form([sp.sign(vv) + sp.sign(vv * sp.cos(xx) ** n + ww * sp.sin(xx) ** n)
+                                 + sp.sign(vv + ww * (1 + xx) ** n - ww)], {vv, ww})
+    assert time.process_time() - start < 5.0
+    assert len(args) == 3

@@ -14,6 +14,7 @@ effects` and ``lagrade show`` print it.
 
 from __future__ import annotations
 
+import random
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, get_args
 
@@ -117,13 +118,55 @@ def dry_friction_form(expr: sp.Expr, velocities: set[sp.Symbol]) -> sp.Expr:
 
 
 def _velocity_switches(expr: sp.Expr, velocities: set[sp.Symbol]) -> list[sp.Expr]:
-    """Arguments of Abs and sign that depend on velocities: where a dissipative force changes branch."""
-    found: list[sp.Expr] = []
-    for f in sp.preorder_traversal(expr):
-        if isinstance(f, (sp.Abs, sp.sign)) and f.args[0].free_symbols & velocities:
-            if not any(sp.simplify(f.args[0] - g) == 0 or sp.simplify(f.args[0] + g) == 0 for g in found):
-                found.append(f.args[0])
-    return found
+    """Arguments of Abs and sign that depend on velocities: where a dissipative force changes branch.
+    One per switch: of the forms of one function (up to sign) the first one written."""
+    return [group[0][0] for group in switch_groups([expr], velocities)]
+
+
+def switch_groups(exprs: list[sp.Expr], velocities: set[sp.Symbol]) -> list[list[tuple[sp.Expr, int]]]:
+    """The velocity-dependent arguments of Abs and sign in ``exprs``, grouped by the function they are up
+    to sign: per group [(form, +1 or -1 against the group's first form)]. A student's rows come here, so
+    forms are compared by value (`same_up_to_sign`), never by ``simplify``."""
+    groups: list[list[tuple[sp.Expr, int]]] = []
+    for expr in exprs:
+        for f in sp.preorder_traversal(expr):
+            if not (isinstance(f, (sp.Abs, sp.sign)) and f.args[0].free_symbols & velocities):
+                continue
+            a = f.args[0]
+            if any(a == form for group in groups for form, _ in group):
+                continue
+            for group in groups:
+                relation = same_up_to_sign(a, group[0][0])
+                if relation:
+                    group.append((a, relation))
+                    break
+            else:
+                groups.append([(a, 1)])
+    return groups
+
+
+def same_up_to_sign(a: sp.Expr, b: sp.Expr, points: int = 3) -> int:
+    """+1 where ``a`` and ``b`` are one function, -1 where a = -b, 0 otherwise: by value at seeded random
+    points, since ``simplify`` on a student's ``v + w (1 + x)^n - w`` takes seconds that grow with n."""
+    if a == b:
+        return 1
+    if a == -b:
+        return -1
+    free = sorted((a - b).free_symbols, key=str)
+    rng = random.Random(0)
+    relation = None
+    for _ in range(points):
+        at = {x: sp.Float(rng.uniform(0.3, 1.7)) for x in free}
+        try:
+            va, vb = complex(a.xreplace(at).evalf(30)), complex(b.xreplace(at).evalf(30))
+        except (TypeError, ValueError, ZeroDivisionError):
+            return 0
+        tol = 1e-12 * (1.0 + abs(va))
+        here = 1 if abs(va - vb) <= tol else -1 if abs(va + vb) <= tol else 0
+        if here == 0 or (relation is not None and here != relation):
+            return 0
+        relation = here
+    return relation or 0
 
 
 def _uses_time(mech: Mechanics) -> list[str]:

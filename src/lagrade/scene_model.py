@@ -34,7 +34,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.compare.trajectory import BatchedEvent
-from lagrade.effects import Machinery, _velocity_switches, dry_friction_form, machinery
+from lagrade.effects import Machinery, _velocity_switches, dry_friction_form, machinery, switch_groups
 from lagrade.numeric import Vectorized, as_row, call_blocks, compile_exprs, solve_batch
 from lagrade.reference import Mechanics, split_energy
 from lagrade.symbols import T
@@ -55,20 +55,18 @@ def branch_form(exprs: list[sp.Expr], velocities: set[sp.Symbol]):
     symbol: (new exprs, switching arguments, branch symbols, sign_like per argument). The same for the
     reference's forces and a student's rows, so both sides switch by the same rule."""
     forms = [dry_friction_form(e, velocities) for e in exprs]
-    args: list[sp.Expr] = []
-    for e in forms:
-        for a in _velocity_switches(e, velocities):
-            if not any(sp.simplify(a - b) == 0 for b in args):
-                args.append(a)
+    groups = switch_groups(forms, velocities)
+    args = [group[0][0] for group in groups]
     sig = list(sp.symbols(f"sigma0:{len(args)}")) if args else []
     repl: dict = {}
     sign_like = []
-    for a, sg in zip(args, sig):
-        repl[sp.Abs(a)] = sg * a
-        repl[sp.Abs(-a)] = sg * a
-        repl[sp.sign(a)] = sg
-        repl[sp.sign(-a)] = -sg
-        sign_like.append(any(f.args[0] in (a, -a) for e in forms for f in e.atoms(sp.sign)))
+    for group, sg in zip(groups, sig):
+        a = group[0][0]
+        for f, relation in group:  # f = relation * a: |f| = sigma a, sign(f) = relation sigma
+            for form, sgn in ((f, relation), (-f, -relation)):
+                repl[sp.Abs(form)] = sg * a
+                repl[sp.sign(form)] = sgn * sg
+        sign_like.append(any(f.args[0] in (g, -g) for g, _ in group for e in forms for f in e.atoms(sp.sign)))
     out = [e.xreplace(repl) for e in forms]
     leftover = [e for e in out if any(f.args[0].free_symbols & velocities for f in e.atoms(sp.Abs, sp.sign))]
     if leftover:
@@ -144,6 +142,9 @@ class Switching:
             S = [j for j in js if stuck[j, k]]
             A = np.array([[G[i, :, k] @ B[j][:, k] for j in S] for i in S])
             b = np.array([-(G[i, :, k] @ F[:, k]) for i in S])
+            if not (np.isfinite(A).all() and np.isfinite(b).all()):
+                F[:, k] = np.nan  # this trajectory's step is rejected, as any NaN; the others go on
+                continue
             sol = np.linalg.lstsq(A, b, rcond=None)[0]
             F[:, k] += sum(np.clip(sj, -1.0, 1.0) * B[j][:, k] for sj, j in zip(sol, S))
         return F
