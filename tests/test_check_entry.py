@@ -106,3 +106,22 @@ def test_unknown_parts_are_one_error_for_both(tmp_path):
         lagrade.check("12.43", answer, only=["Lagr"])
     out = CliRunner().invoke(main, ["check", "12.43", str(answer), "--part", "Lagr"])
     assert out.exit_code == 2 and out.output.strip() == "lagrade: problem 12.43 has no part Lagr"
+
+
+def test_a_failure_while_the_answer_runs_still_collects_its_child():
+    """An answer.py runs in its jailed child while the grader prepares; whatever fails meanwhile (here
+    the caller's own warm-up), the child is waited for and its pipes closed, not left open."""
+    import os
+
+    def fds() -> set[str]:
+        return set(os.listdir("/proc/self/fd"))
+
+    def boom() -> None:
+        raise RuntimeError("the caller's warm-up failed")
+
+    answer = ROOT / "reference_solutions" / "12.22" / "answer.py"
+    lagrade.check("12.22", answer)          # the zygote and every lasting descriptor exist from here on
+    before = fds()
+    with pytest.raises(RuntimeError, match="warm-up failed"):
+        grade.check("12.22", answer, meanwhile=boom)
+    assert fds() - before == set()

@@ -374,6 +374,9 @@ def check(problem: str | Path | Problem, answer: str | Path | None = None, *, pr
     except SceneError as exc:  # the problem file's fault, not the answer's: its file and line
         finish()  # the child is collected, not left behind
         raise SceneFileError(scene_message(prob, exc, dirs), exc.system, exc.field) from exc
+    except BaseException:
+        finish()  # any other failure (or an interrupt) still collects the child and closes its pipes
+        raise
     loaded = finish()
     loaded.values.update(given)
     if grading_seconds is None:
