@@ -103,7 +103,8 @@ def lagrange_inputs(ctx: Context, mech: Mechanics, part: Part, student_acc: Call
                     student_rows: Callable[[], list[sp.Expr]] | None = None, *,
                     everything: bool = False) -> LagrangeInputs:
     """Scenes that declare switching (dissipation with a velocity sign/Abs): the scene's model and the
-    student's rows as switching models with shared events. Others: the student's compiled rates
+    student's rows as switching models, each with its own switching events (the reference's contact
+    loss stops both). Others: the student's compiled rates
     against the generic reference, with contact-loss events only for unilateral contact.
     ``everything``: the switching path with all machinery compiled in (the benchmark's baseline)."""
     q, qd, params, extra = _trajectory_inits(ctx, mech, part)

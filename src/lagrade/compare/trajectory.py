@@ -106,8 +106,8 @@ class BatchedEvent:
     """An event function of the batch: ``fn(t, Y) -> (K,)``, one root per trajectory.
 
     ``action`` "stop": the trajectory ends there (frozen, and compared only up to that time), e.g.
-    contact loss; "switch": ``on_event(k, t, y_k)`` is called and the batch restarts there (a branch
-    change of a non-smooth force). ``direction`` as in `solve_ivp`.
+    contact loss; "switch": ``on_event(k, t, y_k)`` is called and trajectory k goes on from there on
+    its own (a branch change of a non-smooth force; the implicit methods restart the whole batch). ``direction`` as in `solve_ivp`.
     """
 
     name: str
@@ -233,7 +233,7 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
 
     ``method``: None uses ``acc.method`` ("auto": DOP853, or LSODA with a batched Jacobian and, if
     needed, a window the budget can afford, when the scene is stiff). ``events``: batched events
-    (contact loss stops a trajectory; a switching event restarts the batch on a new branch).
+    (contact loss stops a trajectory; a switching event moves it to a new branch, from where it goes on).
     """
     dim, K = y0.shape
     y0 = np.asarray(y0, dtype=float)
@@ -275,7 +275,7 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
             size = np.abs(out).max(axis=0) * alive
             if np.any(size > limit):
                 k = int(np.argmax(size / limit))
-                raise _Singular(float(np.max(t)) if np.ndim(t) else t, k, float(size[k] / limit[k] * SINGULAR_GROWTH))
+                raise _Singular(float(t[k]) if np.ndim(t) else t, k, float(size[k] / limit[k] * SINGULAR_GROWTH))
 
     def fun(t: float | np.ndarray, Y: np.ndarray) -> np.ndarray:
         # called hundreds of times per run on a few dozen numbers: every numpy call here counts
@@ -585,7 +585,7 @@ def compare_runs(student: Rates, reference: Rates, y0: np.ndarray, labels: list[
 def _paired(reference: Rates, K: int) -> Rates:
     """The reference's rates on 2K columns: the K states and a displaced copy of each."""
     if isinstance(reference, CompiledRates):
-        return reference.pair()  # the same compiled function (and machine-code stages) on twice the columns
+        return reference.pair()  # the same compiled function on twice the columns
 
     def pair_rates(t: float, Y: np.ndarray) -> np.ndarray:
         t1, t2 = (t, t) if np.ndim(t) == 0 else (t[:K], t[K:])  # each trajectory may have its own time
