@@ -107,7 +107,8 @@ class BatchedEvent:
 
     ``action`` "stop": the trajectory ends there (frozen, and compared only up to that time), e.g.
     contact loss; "switch": ``on_event(k, t, y_k)`` is called and trajectory k goes on from there on
-    its own (a branch change of a non-smooth force; the implicit methods restart the whole batch). ``direction`` as in `solve_ivp`.
+    its own (a branch change of a non-smooth force; the implicit methods restart the whole batch).
+    ``direction`` as in `solve_ivp`.
     """
 
     name: str
