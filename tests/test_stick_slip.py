@@ -321,3 +321,16 @@ def test_a_students_switching_arguments_are_merged_without_simplify():
                                  + sp.sign(vv + ww * (1 + xx) ** n - ww)], {vv, ww})
     assert time.process_time() - start < 5.0
     assert len(args) == 3
+
+
+def test_branch_symbols_never_take_a_name_already_in_use():
+    """A parameter called sigma0 (a surface density, say) and a branch variable compiled side by side
+    would be one argument twice; the branches take a name no argument or expression uses."""
+    from lagrade.scene_model import branch_form
+
+    vv, xx, s0 = sp.symbols("v x sigma0")
+    rows, _, sig, _ = branch_form([s0 * xx + sp.sign(vv)], {vv}, [xx, vv, s0])
+    assert [str(b) for b in sig] == ["_sigma0"]
+    assert rows == [s0 * xx + sig[0]]
+    _, _, sig, _ = branch_form([xx + sp.sign(vv)], {vv}, [xx, vv])
+    assert [str(b) for b in sig] == ["sigma0"]

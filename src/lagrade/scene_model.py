@@ -28,6 +28,7 @@ that keeps h constant; it leaves (breakaway) when that stops holding.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -50,14 +51,19 @@ class Branches:
     coordinate: list[int | None]       # index of the coordinate whose velocity the argument is, if any
 
 
-def branch_form(exprs: list[sp.Expr], velocities: set[sp.Symbol]):
+def branch_form(exprs: list[sp.Expr], velocities: set[sp.Symbol], taken: Sequence[sp.Symbol] = ()):
     """``exprs`` with each velocity ``sign``/``Abs`` (after `dry_friction_form`) replaced by a branch
     symbol: (new exprs, switching arguments, branch symbols, sign_like per argument). The same for the
-    reference's forces and a student's rows, so both sides switch by the same rule."""
+    reference's forces and a student's rows, so both sides switch by the same rule. Branch symbols are
+    named apart from ``taken`` (the other arguments they are compiled with) and the expressions' own."""
     forms = [dry_friction_form(e, velocities) for e in exprs]
     groups = switch_groups(forms, velocities)
     args = [group[0][0] for group in groups]
-    sig = list(sp.symbols(f"sigma0:{len(args)}")) if args else []
+    names = {str(x) for x in taken} | {str(x) for e in forms for x in e.free_symbols}
+    prefix = "sigma"
+    while any(name.startswith(prefix) for name in names):
+        prefix = "_" + prefix
+    sig = list(sp.symbols(f"{prefix}0:{len(args)}")) if args else []
     repl: dict = {}
     sign_like = []
     for group, sg in zip(groups, sig):
@@ -266,7 +272,7 @@ class SceneModel(Switching):
         self._Q = None
         self._switch = None
         if declared.velocity_forces:
-            Qs, args, sig, sign_like = branch_form(Q, set(s.qd))
+            Qs, args, sig, sign_like = branch_form(Q, set(s.qd), base)
             self._Q = compile_exprs(Qs, [*base, *sig])
             coord = [s.qd.index(a) if a in s.qd else None for a in args]
             self.branches = Branches(args, np.zeros((len(args), 0)), sign_like, coord)
@@ -396,7 +402,7 @@ class EquationsModel(Switching):
         state = [*s.q, *s.qd] if state is None else state
         velocities = set(s.qd) if velocities is None else velocities
         self.switches = {"flip": [], "stick": [], "breakaway": []}
-        rows_s, sw, sig, sign_like = branch_form(list(rows), velocities)
+        rows_s, sw, sig, sign_like = branch_form(list(rows), velocities, args)
         self._solver: Vectorized = CompiledRows(rows_s, unknowns, [*args, *sig]).solver
         self.constants = np.ascontiguousarray(np.asarray(constants, dtype=float))
         coord = [s.qd.index(a) if a in s.qd else None for a in sw]
