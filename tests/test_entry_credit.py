@@ -89,14 +89,14 @@ def test_each_right_entry_of_a_dict_result_earns_its_share():
     assert got.verdict == "partial" and got.score == got.max_score / 2, got.feedback
 
 
-def test_coupled_dict_entries_are_said_to_be_coupled_only_when_given_in_closed_form():
-    m1, m3 = sp.symbols("m1 m3", positive=True)
+def test_coupled_dict_entries_are_said_to_be_coupled():
+    m1, m2, m3, m4 = sp.symbols("m1 m2 m3 m4", positive=True)
     x, y, z = (sp.Function(n)(t) for n in "xyz")
-    S2 = m3 * (g + x.diff(t, 2) - z.diff(t, 2))
-    closed = part(lagrade.check("12.22", S_t={"S1": m1 * g, "S2": S2, "S3": 2 * m1 * g}), "S_t")
+    S = 4 * g / (1 / m1 + 1 / m2 + 1 / m3 + 1 / m4)
+    closed = part(lagrade.check("12.22", S_t={"S1": m1 * g, "S2": S, "S3": 2 * m1 * g}), "S_t")
     assert closed.verdict == "partial" and "S1 and S3 are coupled" in closed.feedback, closed.feedback
     assert abs(closed.score - closed.max_score / 3) < 1e-5
-    # written with the accelerations, each entry is its own mistake: no coupling is claimed
-    own = part(lagrade.check("12.22", S_t={"S1": m1 * (g - x.diff(t, 2)), "S2": S2,
+    # written with the accelerations, nothing was solved: the part is invalid, and says which is left
+    own = part(lagrade.check("12.22", S_t={"S1": m1 * (g - x.diff(t, 2)), "S2": S,
                                           "S3": 2 * m1 * (g - y.diff(t, 2))}), "S_t")
-    assert "coupled" not in own.feedback, own.feedback
+    assert own.verdict == "invalid" and "still contains x''" in own.feedback, own.feedback

@@ -1,5 +1,6 @@
 """One checker per kind of part; the grader looks them up here by the part's ``kind``."""
 
+from lagrade.checkers.admit import admitted
 from lagrade.checkers.base import Context, InvalidAnswer
 from lagrade.checkers.conditions import check_conditions
 from lagrade.checkers.dynamics import check_eom, check_hamilton_eqs, check_hamiltonian, check_lagrangian
@@ -16,7 +17,8 @@ from lagrade.checkers.values import (
     check_names,
 )
 
-CHECKERS = {kind: for_general_functions(checker) for kind, checker in {
+#: every checker reads through `read_sympy` and accepts only as `admitted` allows (checkers/admit.py)
+CHECKERS = {kind: admitted(for_general_functions(checker)) for kind, checker in {
     "lagrangian": check_lagrangian,
     "eom": check_eom,
     "hamiltonian": check_hamiltonian,

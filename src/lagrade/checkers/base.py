@@ -11,6 +11,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from lagrade.checkers import admit
 from lagrade.compare.trajectory import ACCURACY, Accuracy
 from lagrade.credit import Credit
 from lagrade.general_functions import substitute
@@ -80,17 +81,21 @@ def surplus(wrong: int, given: int, expected: int, ctx: Context) -> int:
 
 
 def factor_text(c: float) -> str | None:
-    """A measured factor as a student should read it, when it names a slip: a simple fraction (2, 1/2,
-    3/2: a missing 1/2, a doubled term). Any other factor (1.0001) is not said: the answer divided
-    by it would be the reference, and "1 times" would be false; None then."""
-    from fractions import Fraction
-
+    """A measured factor as a student should read it, when it names a classic slip: 2 or 1/2 (a missing
+    or doubled 1/2). Any other factor is not said: the answer divided by it would be the reference, so
+    the feedback would be an oracle for the coefficients (``in_kind`` says "too large" instead)."""
     if not np.isfinite(c) or c == 0:
         return None
-    frac = Fraction(c).limit_denominator(12)
-    if frac not in (1, -1) and abs(float(frac) - c) <= 1e-9 * abs(c):
-        return str(frac)
+    for slip, text in ((2.0, "2"), (0.5, "1/2")):
+        if abs(c - slip) <= 1e-9 * slip:
+            return text
     return None
+
+
+def in_kind(c: float) -> str:
+    """A factor off in kind only: "too large", "too small", with "the wrong sign" where it is negative."""
+    size = "too large" if abs(c) > 1 else "too small"
+    return f"the wrong sign and {size}" if c < 0 else size
 
 
 def suggest(name: str, known: Iterable[str]) -> str:
@@ -150,12 +155,14 @@ def _evaluate_derivatives(expr: sp.Basic) -> sp.Basic:
         return expr
 
 
-def _real_parts(expr: sp.Basic) -> sp.Basic:
+def _real_parts(expr: sp.Basic, positive: set[str] = frozenset()) -> sp.Basic:
     """``re(t)``, ``im(theta)`` (from ``expand(complex=True)``): every quantity of a problem is real,
-    so read them with real symbols, then go back to the engine's plain symbols."""
+    so read them with real symbols (positive where the problem says so), then go back to the engine's
+    plain symbols."""
     if not expr.has(sp.re, sp.im, sp.arg, sp.conjugate):
         return expr
-    real = {s: sp.Symbol(s.name, real=True) for s in expr.free_symbols if isinstance(s, sp.Symbol)}
+    real = {s: sp.Symbol(s.name, positive=True) if s.name in positive else sp.Symbol(s.name, real=True)
+            for s in expr.free_symbols if isinstance(s, sp.Symbol)}
     back = {v: sp.Symbol(k.name) for k, v in real.items()}
     return expr.xreplace(real).xreplace(back)
 
@@ -195,11 +202,43 @@ def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates:
                 [f"{f.name}({', '.join(f.args)})" for f in mech.system.functions]
             raise InvalidAnswer(f"unknown name '{s.name}' in {part.name}{hint}; the problem's names are "
                                 f"{', '.join(public)}")
+    if part.kind in RESULT_KINDS and not part.accelerations:
+        max_order = min(max_order, 1)
+        _no_accelerations(nodes, part)
     try:
         state = sp.sympify(to_state(expr, list(mech.all_names), max_order=max_order, momenta_too=momenta, nodes=nodes))
     except NotationError as exc:
         raise InvalidAnswer(f"{part.name}: {exc}") from None
-    return _real_parts(state)
+    if part.kind in MOTION_KINDS:
+        _no_state(state, part, mech)
+    positive = {p.name for p in mech.parameters if p.positive}
+    return admit.screen(_real_parts(state, positive), part, mech)
+
+
+#: kinds whose answer is a result (a value of the scene's quantities): the accelerations must be solved
+#: for, never left as q'' (which grading would fill with the true ones); `Part.accelerations` lifts it
+RESULT_KINDS = frozenset({"expression", "expression_set", "equation_root"})
+#: kinds whose answer is the motion itself, a function of t: no coordinate or velocity in it
+MOTION_KINDS = frozenset({"trajectory", "numerical_solution"})
+
+
+def _no_accelerations(nodes, part: Part) -> None:
+    """A result with q'' in it is not solved: say which acceleration is left, and why it is not allowed."""
+    for d in sorted(nodes.derivatives, key=str):
+        order = sum(c for _, c in d.variable_count)
+        if order >= 2 and isinstance(d.expr, AppliedUndef):
+            name = d.expr.func.__name__
+            raise InvalidAnswer(f"your {part.name} still contains {name}'' (the acceleration {name}(t).diff(t, 2)): "
+                                "a result must be solved for, in the parameters and the state; solve the "
+                                "equations of motion for the accelerations and put them in")
+
+
+def _no_state(state: sp.Expr, part: Part, mech: Mechanics) -> None:
+    taken = {*mech.s.q, *mech.s.qd, *mech.s.qdd, *mech.s.p} - {sp.Symbol(s) for s in part.symbols}
+    left = sorted((str(s) for s in state.free_symbols & taken), key=str)
+    if left:
+        raise InvalidAnswer(f"your {part.name} contains {left[0].replace('_dd', chr(39) * 2).replace('_d', chr(39))}: "
+                            "the motion must be given as a function of t and the parameters alone")
 
 
 def equation_rows(value: object, part: Part) -> list[sp.Expr]:

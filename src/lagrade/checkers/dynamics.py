@@ -14,12 +14,14 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from lagrade.checkers import admit
 from lagrade.checkers.base import (
     Context,
     InvalidAnswer,
     equation_rows,
     factor_text,
     graded,
+    in_kind,
     multiplier_names,
     read_expr,
     read_sympy,
@@ -221,7 +223,7 @@ def _confirm(ctx: Context, prove: Callable[[], bool | None], trajectory: Callabl
     symbolic proof only where they do not settle it (chaos, a failed integration) or when asked
     (``--accuracy strict``), because sympy's simplification can take far longer than everything else."""
     traj = _try(trajectory)
-    proof = prove() if ctx.prove_always or traj is None or not traj.agree else None
+    proof = prove() if ctx.prove_always or admit.pending() or traj is None or not traj.agree else None
     return proof, traj
 
 
@@ -232,6 +234,7 @@ def _decide(ctx: Context, part: Part, proof: bool | None, traj: Comparison | Non
     a strict trajectory), and evidence that could not decide is flagged for an instructor's review."""
     extra = f" {note}" if note else ""
     if proof:
+        admit.proved()
         res = graded(part, 1.0, "symbolic", f"correct: proved equivalent to the reference.{extra}")
         if traj is not None and traj.decisive:
             res.review = ("proved equivalent, yet the integrated motions differ beyond the tolerance: "
@@ -358,7 +361,8 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
         return _decide(ctx, part, proof, traj, note)
     if c is not None and np.all(np.abs(c) > 1e-9):
         same = np.allclose(c, c[0], rtol=1e-6)
-        factor = (factor_text(float(c[0])) or "a constant factor") if same else "a factor that depends on the parameters"
+        factor = (factor_text(float(c[0])) or f"a constant factor ({in_kind(float(c[0]))})") if same \
+            else "a factor that depends on the parameters"
         return graded(part, ctx.credit.scaled_lagrangian, "numeric",
                       f"your Lagrangian is the right one scaled by {factor}: it gives the same equations of motion, "
                       "but L = T - V fixes the scale (the momenta and H would be off by that factor).")
@@ -463,6 +467,16 @@ def _describe_term(term: sp.Expr, mech: Mechanics) -> str:
     return f"a {kind} term in {', '.join(n.replace('_d', chr(39)) for n in names)}"
 
 
+def _off_in_kind(mine: sp.Expr, right: sp.Expr) -> str:
+    """How a coefficient is off, in kind only: never the ratio, which a repeated query would turn
+    into the reference's coefficient."""
+    try:
+        ratio = float(mine / right)
+    except (TypeError, ValueError, ZeroDivisionError):
+        return "is not what it should be"
+    return "has the wrong sign" if abs(ratio + 1) < 1e-12 else f"is {in_kind(ratio)}"
+
+
 def term_hints(L_s: sp.Expr, L_ref: sp.Expr, mech: Mechanics) -> str:
     """Which terms of the student's L are extra or off by a factor, and what kind of term is missing.
 
@@ -474,9 +488,7 @@ def term_hints(L_s: sp.Expr, L_ref: sp.Expr, mech: Mechanics) -> str:
         if key not in ref:
             notes.append(f"your term {sp.sstr(c * key).replace('_d', chr(39))} should not be there")
         elif not sp.simplify(c - ref[key]) == 0:
-            ratio = sp.nsimplify(c / ref[key])
-            what = "has the wrong sign" if ratio == -1 else f"is {ratio} times what it should be"
-            notes.append(f"your term {sp.sstr(c * key).replace('_d', chr(39))} {what}")
+            notes.append(f"your term {sp.sstr(c * key).replace('_d', chr(39))} {_off_in_kind(c, ref[key])}")
     for key in ref:
         if key not in mine:
             notes.append(f"{_describe_term(key, mech)} is missing")
@@ -538,6 +550,7 @@ def _vanishes(row: sp.Expr, mech: Mechanics, part: Part) -> bool:
 def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     mech = ctx.mech(part)
     rows, lams = _eom_rows(ctx, part, value, mech)
+    rows = admit.linear_rows(rows, list(mech.s.qdd), "accelerations", ctx.symbolic_seconds)
     if part.linearized:
         return _check_linearized(ctx, part, mech, rows)
     pts = with_reference_dynamics(mech, sample_points(mech, ctx.points, rng_for(ctx.problem.id, part.name),
@@ -826,6 +839,7 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
     unknowns = [*mech.s.qd, *mech.s.pd]
     if any(r.has(a) for r in rows for a in mech.s.qdd):
         raise InvalidAnswer(f"{part.name} should be first-order equations for q' and p'; found a second derivative")
+    rows = admit.linear_rows(rows, unknowns, "rates", ctx.symbolic_seconds)
     pts, groups, per, (q, p, t, params) = _hamilton_points(ctx, mech, part)
     extra = [sp.Symbol(s) for s in part.symbols]
     args = [*mech.s.q, *mech.s.p, T, *mech.params, *extra]

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from lagrade.checkers.admit import admitted
 from lagrade.checkers.base import Context, equation_rows, graded, read_expr, read_sympy
 from lagrade.compare.equations import CompiledRows, analyse_rows
 from lagrade.compare.symbolic import _OutOfTime, time_bound
@@ -121,4 +122,4 @@ def _is_hamiltonian(f: list[sp.Expr], g: list[sp.Expr], mech: Mechanics, pts, ex
     return bool(np.all(np.abs(values) <= 1e-8 * scale))
 
 
-GAUGE_CHECKERS = {"hamiltonian": check_hamiltonian_gauge, "hamilton_eqs": check_hamilton_eqs_gauge}
+GAUGE_CHECKERS = {"hamiltonian": admitted(check_hamiltonian_gauge), "hamilton_eqs": admitted(check_hamilton_eqs_gauge)}

@@ -10,12 +10,14 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from lagrade.checkers import admit
 from lagrade.checkers.base import (
     Context,
     InvalidAnswer,
     as_expr,
     factor_text,
     graded,
+    in_kind,
     key_name,
     read_sympy,
     result,
@@ -89,11 +91,18 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
     a = _evaluate(student, pts, syms)
     b = _evaluate(ref, pts, syms)
     if np.all(agree(a, b)):
-        if not ctx.prove_always:  # equal at every sampled point: a proof would add time, not certainty
-            return True, "numeric", ""
+        flagged = admit.pending(student)
+        if not ctx.prove_always and not flagged:  # analytic and equal at every sampled point: a proof
+            return True, "numeric", ""            # would add time, not certainty
         sym_ref = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
         proof = proves_zero(student - sym_ref, ctx.symbolic_seconds, ctx.positive) if sym_ref is not None else None
-        return True, ("symbolic" if proof else "numeric"), ""
+        if proof:
+            admit.proved(student)
+            return True, "symbolic", ""
+        if flagged:
+            return False, "numeric", f"cannot be accepted without a proof: {admit.unproved(student)}"
+        return True, "numeric", ""
+    admit.proved(student)  # refuted: it earns nothing, so nothing about it is pending
     return False, "numeric", _describe_difference(a, b)
 
 
@@ -116,7 +125,7 @@ def _describe_difference(a: np.ndarray, b: np.ndarray) -> str:
         varies = np.ptp(b) > 1e-9 * scale_of(b)
         said = factor_text(float(c))
         if said is None:
-            return "is off by a constant factor"
+            return f"is off by a constant factor ({in_kind(float(c))})"
         return f"is {said} times the correct value" + (" (a missing or extra factor)" if varies else "")
     with np.errstate(all="ignore"):
         inverse = a * b
@@ -268,6 +277,11 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
         scale = scale_of(off)
         if not (np.all(np.abs(at_root) <= 1e-8 * scale) and np.any(np.abs(off) > 1e-6 * scale)):
             return graded(part, 0.0, "numeric", f"Incorrect: the true {part.unknown} does not satisfy your equation.")
+        if part.domain is None and not _linear_in(expr, x, ctx.symbolic_seconds):
+            return graded(part, 0.0, "numeric",
+                          f"Incorrect: the true {part.unknown} satisfies your equation, but it is not linear in "
+                          f"{part.unknown} (after clearing denominators), so it may have other solutions: write "
+                          f"an equation that singles {part.unknown} out.")
         if part.domain is not None and _another_root(f, b, pts.args(others), part.domain):
             lo, hi = part.domain
             return graded(part, 0.0, "numeric",
@@ -279,13 +293,26 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
     a = _evaluate(student, pts, syms)
     if np.all(agree(a, b)):
         proof = None
-        if ctx.prove_always:
+        if ctx.prove_always or admit.pending(student):
             sym_ref = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
             proof = proves_zero(student - sym_ref, ctx.symbolic_seconds) if sym_ref is not None else None
+        if proof:
+            admit.proved(student)
         return graded(part, 1.0, "symbolic" if proof else "numeric", "correct.")
     if np.all(agree(a, np.degrees(b), rtol=1e-3)):
         return graded(part, 0.0, "numeric", "Incorrect: this looks like degrees; give the angle in radians.")
     return graded(part, 0.0, "numeric", f"Incorrect: {part.unknown} {_describe_difference(a, b)}.")
+
+
+def _linear_in(expr: sp.Expr, x: sp.Symbol, seconds: float) -> bool:
+    """Is ``expr = 0`` linear in ``x`` once its denominators are cleared (one root, where its
+    coefficient is not zero)? Time-bounded; out of time counts as no."""
+    try:
+        with time_bound(seconds):
+            numerator = sp.numer(sp.together(expr))
+            return not sp.diff(numerator, x).has(x)
+    except _OutOfTime:
+        return False
 
 
 def _names_in(expr: sp.Basic) -> set[str]:

@@ -1,8 +1,0 @@
-# Components left in terms of theta'' and z (Newton's law along each direction minus the real force).
-from lagrade.answer import *
-
-m, a, k, c = parameters("m a k c")
-theta, z, r = coordinates("theta z r")
-R_r = m * (diff(r, t, 2) - r * dot(theta) ** 2) + c * r
-R_theta = m * a * dot(theta, 2)
-R_z = m * diff(z, t, 2) + c * z
