@@ -1,0 +1,17 @@
+# target: S_t
+# family: floats
+# expect: no-credit
+# why: every tension is multiplied by a 3000-digit float 1 + 1e-2900: not the exact tension
+from sympy import *
+
+t = symbols("t")
+m1, m2, m3, m4, g, l1, l2, l3, m = symbols("m1 m2 m3 m4 g l1 l2 l3 m", positive=True)
+x, y, z = Function("x")(t), Function("y")(t), Function("z")(t)
+xd, yd, zd = x.diff(t), y.diff(t), z.diff(t)
+
+S = 4*g/(1/m1 + 1/m2 + 1/m3 + 1/m4)
+right_a = {"m1": g - S/m1, "m2": g - S/m2, "m3": g - S/m3, "m4": g - S/m4}
+right_S = {"S1": S, "S2": S, "S3": 2*S}
+
+c = Float("1." + "0"*2900 + "1", 3000)
+S_t = {k: c*v for k, v in right_S.items()}
