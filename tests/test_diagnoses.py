@@ -23,7 +23,7 @@ def part(result, name):
     return next(p for p in result.parts if p.part == name)
 
 
-@pytest.mark.parametrize("c, said", [(1.0001, None), (0.5, "1/2"), (2.0, "2"), (2 / 3, "2/3"), (-1.5, "-3/2"),
+@pytest.mark.parametrize("c, said", [(1.0001, None), (0.5, "1/2"), (2.0, "2"), (2 / 3, None), (-1.5, None),
                                      (0.9999, None), (1 + 1e-7, None), (3.14159, None)])
 def test_a_factor_is_said_only_when_it_names_a_slip(c, said):
     assert factor_text(c) == said

@@ -121,8 +121,9 @@ def screen(expr: sp.Expr, part: Part, mech) -> sp.Expr:
     if _maybe_complex(expr):
         _reality(expr, part, mech)
     current = _SCREEN.get()
-    if notes and current is not None:
+    if notes and current is not None:  # each reading is pending anew (two entries may be the same expression)
         current.flagged[expr] = _reasons(notes)
+        current.settled.discard(expr)
     return expr
 
 
@@ -145,11 +146,12 @@ def _numbers(expr: sp.Expr) -> tuple[sp.Expr, list[str]]:
         exact[f] = sp.Rational(f)
     expr = expr.xreplace(exact) if exact else expr
     for c in _constants(expr):
-        try:
-            size = abs(complex(c.evalf(20)))
+        try:  # in sympy's floats: exp(-1000) is below the smallest double
+            size = abs(c.evalf(20))
+            small, large = bool(size < CONSTANT_SIZES[0]), bool(size > CONSTANT_SIZES[1])
         except (TypeError, ValueError):
             continue
-        if size and not CONSTANT_SIZES[0] <= size <= CONSTANT_SIZES[1]:
+        if not size.is_zero and (small or large):
             notes.append(f"the constant {_short(c)} (about {_g(size)}) is far from the size of a formula's numbers")
     return expr, notes
 
@@ -167,7 +169,7 @@ def _g(x: float | sp.Basic) -> str:
 def simple_number(f: sp.Float) -> sp.Expr | None:
     """The simple number a float stands for: p/q (q <= 1000), or that times pi or sqrt(k), within
     1e-12 relative; a float typed with more digits than a double holds must equal it to all of them."""
-    if f == 0:
+    if f.is_zero:
         return sp.S.Zero
     prec = f._prec
     tol = FLOAT_TOLERANCE if prec <= 64 else max(2.0 ** (8 - prec), 0.0)
@@ -388,6 +390,14 @@ def admitted(checker: Checker) -> Checker:
                 res = checker(ctx, part, value)
             except Refuted as exc:
                 return _nothing(part, f"Incorrect: {part.name}: {exc}.")
+            except Exception as exc:
+                left = mine.pending()
+                if not left or not isinstance(exc, (TypeError, ValueError, ArithmeticError, AttributeError,
+                                                    NotImplementedError, KeyError)):
+                    raise
+                # a construct outside the class that the engine cannot even evaluate (the derivative of a
+                # floor): the answer's own doing, and it earns nothing either way
+                return refuse(part, _reasons(left), _nothing(part, "the engine could not evaluate it"))
             left = mine.pending()
             if res.score > 0 and left:
                 res = refuse(part, _reasons(left), res)
