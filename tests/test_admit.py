@@ -96,6 +96,16 @@ def test_inexact_numbers_earn_nothing_and_say_how_far_they_are():
     assert got.score == 0 and "not a simple fraction" in got.feedback, got.feedback
     got = part(lagrade.check("12.22", a={k: v + sp.exp(-1000) * g for k, v in A.items()}), "a")
     assert got.score == 0 and "far from the size" in got.feedback, got.feedback
+    nearly_one = (1 + sp.Rational(1, 10**6)) ** sp.Rational(1, 1000)   # 1 + 1e-9, from small numbers
+    got = part(lagrade.check("12.22", a={k: nearly_one * v for k, v in A.items()}), "a")
+    assert got.score == 0 and "without being equal" in got.feedback, got.feedback
+    exact = {k: sp.sqrt(8) / (2 * sp.sqrt(2)) * v for k, v in A.items()}   # exactly 1: no flag
+    assert part(lagrade.check("12.22", a=exact), "a").verdict == "correct"
+
+
+def test_a_purely_imaginary_constant_refutes():
+    got = part(lagrade.check("12.22", a={**A, "m1": A["m1"] + 1000 * (sp.asin(2) - sp.pi / 2)}), "a")
+    assert got.verdict == "incorrect" and "imaginary" in got.feedback, got.feedback
 
 
 def test_declared_drag_keeps_its_velocity_switch():

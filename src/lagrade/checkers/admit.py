@@ -153,6 +153,11 @@ def _numbers(expr: sp.Expr) -> tuple[sp.Expr, list[str]]:
             continue
         if not size.is_zero and (small or large):
             notes.append(f"the constant {_short(c)} (about {_g(size)}) is far from the size of a formula's numbers")
+            continue
+        near = _near_simple(c)
+        if near is not None:
+            notes.append(f"the constant {_short(c)} is within {_g(abs(c.evalf(50) - near.evalf(50)))} of {near} "
+                         "without being equal to it")
     return expr, notes
 
 
@@ -188,6 +193,29 @@ def simple_number(f: sp.Float) -> sp.Expr | None:
     return None
 
 
+def _near_simple(c: sp.Expr) -> sp.Expr | None:
+    """A simple number a constant expression is within 1e-9 of (relative) but not equal to, to 40
+    digits: (1 + 1/10**6)**(1/1000) or sqrt(1 + 10**-10) stand for 1 as a float would, and are not."""
+    try:
+        value = c.evalf(50)
+        if not value.is_real or value.is_zero:
+            return None
+        near = None
+        for factor in SIMPLE_FACTORS:
+            frac = Fraction(float(value / factor)).limit_denominator(SIMPLE_DENOMINATOR)
+            candidate = sp.Rational(frac.numerator, frac.denominator) * factor
+            if candidate.is_zero:
+                continue
+            rel = abs((value - candidate.evalf(50)) / value)
+            if rel <= 1e-40:
+                return None  # equal to a simple number: 2*pi, sqrt(8)/2
+            if rel <= 1e-9 and near is None:
+                near = candidate
+        return near
+    except (TypeError, ValueError, OverflowError, ZeroDivisionError):
+        return None
+
+
 def _nearest(f: sp.Float) -> sp.Rational | None:
     try:
         frac = Fraction(float(f)).limit_denominator(SIMPLE_DENOMINATOR)
@@ -197,7 +225,8 @@ def _nearest(f: sp.Float) -> sp.Rational | None:
 
 
 def _constants(expr: sp.Basic) -> list[sp.Basic]:
-    """The largest constant subexpressions that are not plain rationals (exp(-1000), 10**-9*pi)."""
+    """The largest constant subexpressions that are not plain numbers: the product of a term's constant
+    factors, the sum of a sum's constant terms (10**(497/500)*1000001**(1/1000)/10, exp(-1000))."""
     out, stack = [], [expr]
     while stack:
         e = stack.pop()
@@ -208,6 +237,12 @@ def _constants(expr: sp.Basic) -> list[sp.Basic]:
             continue
         if not e.free_symbols:
             out.append(e)
+            continue
+        if e.is_Add or e.is_Mul:
+            const, rest = e.as_independent(*e.free_symbols, as_Add=e.is_Add)
+            if not const.is_Atom:
+                out.append(const)
+            stack.extend(sp.Add.make_args(rest) if e.is_Add else sp.Mul.make_args(rest))
             continue
         stack.extend(e.args)
     return out
@@ -322,6 +357,8 @@ def _friction_switch(e: sp.Basic, allowed: set[sp.Symbol], mech, part: Part) -> 
         free = arg.free_symbols
         if not free & allowed or not free <= allowed | params:
             return False
+        if any(sp.diff(arg, v).has(*allowed) for v in free & allowed):  # a half-space per branch: linear
+            return False
         if not _both_signs(arg, mech, part):
             return False
     return True
@@ -336,14 +373,24 @@ def _both_signs(arg: sp.Expr, mech, part: Part) -> bool:
 
 
 def _maybe_complex(expr: sp.Basic) -> bool:
+    """I, or a constant that is not real (asin(2) - pi/2, (-1)**(1/3)): evaluated in complex arithmetic,
+    which numpy's real evaluation would turn into its real part."""
     if expr.has(sp.I):
         return True
-    return any(p.base.is_number and p.base.is_negative and not p.exp.is_Integer
-               for p in expr.atoms(sp.Pow) if p.is_number)
+    for c in _constants(expr):
+        try:
+            if sp.im(c.evalf(30)) != 0:
+                return True
+        except (TypeError, ValueError):
+            return True
+    return False
 
 
 def _reality(expr: sp.Expr, part: Part, mech) -> None:
     """An imaginary part at any sampled state refutes: every quantity of these problems is real."""
+    # constants as sympy evaluates them (numpy's arcsin(2) is NaN, not complex)
+    expr = expr.replace(lambda e: not e.is_Atom and isinstance(e, sp.Expr) and not e.free_symbols
+                        and (isinstance(e, sp.Function) or e.is_Pow), lambda e: e.evalf(20))
     with np.errstate(all="ignore"):
         values = _at_samples(expr, mech, part, "reality")
     finite = np.isfinite(values)
