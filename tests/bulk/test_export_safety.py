@@ -21,7 +21,7 @@ from lagrade.bulk.exports import FORMULA_STARTS, spreadsheet_safe
 from lagrade.cli.bulk import export, grade, report
 
 REPO = classgen.REPO
-FORMULAS = ["=cmd|' -C calc'!A0", "+1", "-2", "@SUM(A1)"]
+FORMULAS = ["=cmd|' -C calc'!A0", "+1", "-2", "@SUM(A1)", " =1+1"]  # a leading space hides nothing
 #: the classic payload holds a '/': on disk, folder "=cmd|' " (a student, nothing gradable) holding
 #: folder "C calc'!A0" (skipped: a folder inside a student folder)
 DDE = "=cmd|' /C calc'!A0"
@@ -93,14 +93,14 @@ def test_every_csv_export_writes_formula_names_as_text(graded):
     assert ["Hara, O", "'=1+1", "'-S1", "o'hara", "'@A", "3"] in _rows(outputs["canvas --roster"])
 
     plain = _rows(outputs["csv"])
-    assert plain[0] == ["student", "12.43", "total", "possible", "12.43 status", "jail", "overrides"]
+    assert plain[0] == ["student", "12.43", "total", "possible", "12.43 status", "jail", "overrides", "late"]
     by_student = {r[0]: r for r in plain[1:]}
     assert set(by_student) == {"'" + s for s in FORMULAS} | set(HONEST) | {"'=cmd|' "}
     for student in FORMULAS + HONEST:
         row = by_student[spreadsheet_safe(student)]
         assert row[1:5] == ["3", "3", "3", "graded"], row  # numbers stay numbers
         assert row[5], "the jail the grader reported"
-    assert by_student["'=cmd|' "][1:] == ["0", "0", "3", "missing", "", ""]
+    assert by_student["'=cmd|' "][1:] == ["0", "0", "3", "missing", "", "", ""]
 
     skipped = {r[0]: r[1] for r in _rows(outputs["skipped"])[1:]}
     assert skipped["'" + DDE] == "a folder inside a student folder (expected <student>/<problem-id>.py)"
@@ -122,8 +122,8 @@ def test_the_html_report_and_gradescope_json_carry_names_as_they_are(graded):
 
 
 def test_spreadsheet_safe_quotes_text_not_numbers():
-    for cell in ["=1+1", "+1", "-2", "@SUM(A1)", "\tx", "\rx", "-1.5"]:
+    for cell in ["=1+1", "+1", "-2", "@SUM(A1)", "\tx", "\rx", "-1.5", " =1", "  +1", " \t@A", "\n=1"]:
         assert spreadsheet_safe(cell) == "'" + cell
-    for cell in ["ada", "12.43", "", "a=b", " =1", "'quoted"]:
+    for cell in ["ada", "12.43", "", "a=b", " a=1", "'quoted"]:
         assert spreadsheet_safe(cell) == cell
     assert spreadsheet_safe(-1.5) == "-1.5" and spreadsheet_safe(3.0) == "3" and spreadsheet_safe(2) == "2"

@@ -62,12 +62,15 @@ def test_canvas_fills_the_assignments_column_from_the_roster(graded):
     rows, err = _canvas(db, "--roster", str(tmp / "roster.csv"))
     assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "Homework 7 (4411)"]
     assert rows[1] == ["Points Possible", "", "", "", "", "4"]
+    # carol is on the roster and handed nothing in: by default no row, so Canvas keeps what it has
     assert rows[2:] == [["Lovelace, Ada", "101", "S101", "ada", "A", "4"],
-                        ["Babbage, Bob", "102", "S102", "bob", "A", "2.5"],
-                        ["Carol, C", "103", "S103", "carol", "B", "0"]]   # on the roster, nothing handed in
+                        ["Babbage, Bob", "102", "S102", "bob", "A", "2.5"]]
+    assert "1 roster students have no folder and are left out" in err and "Carol, C" in err
     assert "1 student folders are on no row" in err and err.rstrip().endswith(": zed")
-    rows, _ = _canvas(db, "--roster", str(tmp / "roster.csv"), "--missing", "blank")
-    assert rows[4] == ["Carol, C", "103", "S103", "carol", "B", ""]
+    rows, err = _canvas(db, "--roster", str(tmp / "roster.csv"), "--missing", "zero")
+    assert rows[4] == ["Carol, C", "103", "S103", "carol", "B", "0"] and "given 0" in err
+    rows, err = _canvas(db, "--roster", str(tmp / "roster.csv"), "--missing", "blank")
+    assert rows[4] == ["Carol, C", "103", "S103", "carol", "B", ""] and "REMOVES the grade" in err
     rows, _ = _canvas(db)  # no roster: every folder, its name as SIS Login ID
     assert [r[0] for r in rows[2:]] == ["ada", "bob", "zed"]
 
@@ -103,8 +106,8 @@ def test_import_a_canvas_download(graded, tmp_path):
     res = CliRunner().invoke(import_, [str(dl), "-a", str(tmp / "hw7.toml"), "-o", str(out),
                                        "--roster", str(tmp / "roster.csv")])
     assert res.exit_code == 0, res.output
-    assert sorted(str(p.relative_to(out)) for p in out.rglob("*") if p.is_file()) == [
-        "ada/12.3.py", "bob/12.3.py", "doejane/12.3.py", "roe/12.3.toml"]
+    assert sorted(str(p.relative_to(out)) for p in out.rglob("*") if p.is_file() and p.name[0] != ".") == [
+        "ada/12.3.py", "bob/12.3.py", "doejane_555/12.3.py", "roe/12.3.toml"]
     assert (out / "ada" / "12.3.py").read_bytes() == ref
     assert "babbagebob_late_102_9002_12_3.py was graded as problem 12.3" in res.output
     assert "doejane_555_9003_hw7-12.3 (1).PY was graded as problem 12.3" in res.output
@@ -261,5 +264,152 @@ def test_two_folders_for_one_roster_student_are_reported(graded):
     book.students.append(dataclasses.replace(book.students[0], student="101"))
     roster = read_roster(tmp / "roster.csv")
     assert not_on_roster(book, roster) == ["zed", "101"]
-    rows = list(csv.reader(io.StringIO(canvas_csv(book, roster))))
+    rows = list(csv.reader(io.StringIO(canvas_csv(book, roster, missing="zero"))))
     assert [r[3] for r in rows[2:]] == ["ada", "bob", "carol"]
+
+
+# ------------------------------------------------------------------ Canvas's download, as its zipper names it
+# canvas-lms ContentZipper#get_filename: [sortable name, "LATE" if late, user id].join("_"), every
+# non-word character removed, lower-cased; then "_<attachment id>_<display name>" per file;
+# "anon_<anonymous id>" in place of name and user id under anonymous grading.
+
+def _import(dl: Path, out: Path, *args: str):
+    return CliRunner().invoke(import_, [str(dl), "-a", str(_hw(out.parent)), "-o", str(out), *args])
+
+
+def _hw(folder: Path) -> Path:
+    path = folder / "hw7.toml"
+    if not path.exists():
+        path.write_text(HW)
+    return path
+
+
+def _files(out: Path) -> dict[str, str]:
+    return {str(p.relative_to(out)): p.read_text() for p in sorted(out.rglob("*")) if p.is_file()
+            and not p.name.startswith(".")}
+
+
+def test_two_students_who_share_a_name_stay_two(tmp_path):
+    """Grouped by Canvas user id: neither file replaces the other, with a roster or without."""
+    dl = tmp_path / "download"
+    dl.mkdir()
+    (dl / "smithjohn_201_9001_12.3.py").write_text("L = 'right'\n")
+    (dl / "smithjohn_202_9002_12.3.py").write_text("L = 0\n")
+    res = _import(dl, tmp_path / "out")
+    assert res.exit_code == 0, res.output
+    assert _files(tmp_path / "out") == {"smithjohn_201/12.3.py": "L = 'right'\n", "smithjohn_202/12.3.py": "L = 0\n"}
+    assert "several files" not in res.output
+    roster = tmp_path / "roster.csv"
+    roster.write_text("Student,ID,SIS User ID,SIS Login ID,Section\n    Points Possible,,,,\n"
+                      "\"Smith, John\",201,S1,jsmith1,A\n\"Smith, John\",202,S2,jsmith2,A\n")
+    res = _import(dl, tmp_path / "out2", "--roster", str(roster))
+    assert res.exit_code == 0, res.output
+    assert _files(tmp_path / "out2") == {"jsmith1/12.3.py": "L = 'right'\n", "jsmith2/12.3.py": "L = 0\n"}
+
+
+def test_anonymous_underscored_late_and_zipped_downloads(tmp_path):
+    import json
+    import zipfile
+
+    dl = tmp_path / "download"
+    dl.mkdir()
+    (dl / "anon_nb0xh_9101_12.3.py").write_text("L = 'anon1'\n")           # anonymous grading
+    (dl / "late_anon_q7r2k_9102_12.3.py").write_text("L = 'anon2'\n")
+    (dl / "o_brienmary_301_9103_12.3.py").write_text("L = 'mary'\n")       # "O_Brien, Mary": the _ stays
+    (dl / "lovelaceada_late_101_9104_12.3.py").write_text("L = 'ada'\n")   # late
+    with zipfile.ZipFile(dl / "turingalan_302_9105_hw7.zip", "w") as z:    # a zipped submission
+        z.writestr("hw7/12.3.py", "L = 'alan'\n")
+        z.writestr("../escape.py", "L = 1\n")
+    res = _import(dl, tmp_path / "out")
+    assert res.exit_code == 0, res.output
+    assert _files(tmp_path / "out") == {
+        "anon_nb0xh/12.3.py": "L = 'anon1'\n", "anon_q7r2k/12.3.py": "L = 'anon2'\n",
+        "lovelaceada_101/12.3.py": "L = 'ada'\n", "o_brienmary_301/12.3.py": "L = 'mary'\n",
+        "turingalan_302/12.3.py": "L = 'alan'\n"}
+    assert "../escape.py in the zip is not a plain file inside it" in res.output
+    assert not (tmp_path / "escape.py").exists()
+    lms = json.loads((tmp_path / "out" / ".lagrade-import.json").read_text())["students"]
+    assert lms["lovelaceada_101"] == {"canvas_user_id": "101", "name": "lovelaceada", "late": True}
+    assert lms["anon_q7r2k"]["late"] and not lms["o_brienmary_301"]["late"]
+    assert "(2 late)" in res.output
+
+
+def test_the_late_marker_reaches_the_gradebook(tmp_path):
+    dl = tmp_path / "download"
+    dl.mkdir()
+    ref = (REPO / "reference_solutions/12.3/answer.py").read_bytes()
+    (dl / "lovelaceada_late_101_9104_12.3.py").write_bytes(ref)
+    (dl / "babbagebob_102_9105_12.3.py").write_bytes(ref)
+    assert _import(dl, tmp_path / "subs").exit_code == 0
+    db = tmp_path / "hw7.sqlite"
+    res = CliRunner().invoke(grade, [str(tmp_path / "subs"), "-a", str(_hw(tmp_path)), "--db", str(db), "-j", "1",
+                                     "--no-summary"])
+    assert res.exit_code == 0 and "0 files skipped" in " ".join(res.output.split()), res.output  # the record too
+    plain = {r["student"]: r for r in csv.DictReader(io.StringIO(
+        CliRunner().invoke(export, [str(db), "--format", "csv"]).stdout))}
+    assert plain["lovelaceada_101"]["late"] == "late" and plain["babbagebob_102"]["late"] == ""
+
+
+def test_importing_without_a_roster_then_exporting_with_one_is_refused(graded, tmp_path):
+    """Every student would get no grade (or 0): one line, exit 2, never a CSV."""
+    tmp, db = graded
+    dl = tmp_path / "download"
+    dl.mkdir()
+    ref = (REPO / "reference_solutions/12.3/answer.py").read_bytes()
+    (dl / "lovelaceada_101_9001_12.3.py").write_bytes(ref)
+    assert _import(dl, tmp_path / "subs").exit_code == 0
+    db2 = tmp_path / "hw7.sqlite"
+    assert CliRunner().invoke(grade, [str(tmp_path / "subs"), "-a", str(tmp / "hw7.toml"), "--db", str(db2), "-j",
+                                      "1", "--no-summary"]).exit_code == 0
+    for missing in ("keep", "zero"):
+        res = CliRunner().invoke(export, [str(db2), "--format", "canvas", "--roster", str(tmp / "roster.csv"),
+                                          "--missing", missing])
+        assert res.exit_code == 2 and res.stdout == "", res.output
+        assert len(res.stderr.strip().splitlines()) == 1 and "--roster" in res.stderr, res.stderr
+    assert _canvas(db, "--roster", str(tmp / "roster.csv"))[0]  # some folders on the roster: exported
+
+
+def test_bom_for_excel(graded):
+    _, db = graded
+    for fmt in ("canvas", "csv"):
+        res = CliRunner().invoke(export, [str(db), "--format", fmt, "--bom"])
+        assert res.exit_code == 0 and res.stdout_bytes.startswith(b"\xef\xbb\xbf"), res.output
+        assert not CliRunner().invoke(export, [str(db), "--format", fmt]).stdout_bytes.startswith(b"\xef")
+    assert CliRunner().invoke(export, [str(db), "--format", "gradescope", "--bom"]).exit_code == 2
+
+
+def test_a_zipped_canvas_download_imports(tmp_path):
+    import zipfile
+
+    with zipfile.ZipFile(tmp_path / "submissions.zip", "w") as z:
+        z.writestr("lovelaceada_101_9001_12.3.py", "L = 1\n")
+    res = _import(tmp_path / "submissions.zip", tmp_path / "out")
+    assert res.exit_code == 0, res.output
+    assert _files(tmp_path / "out") == {"lovelaceada_101/12.3.py": "L = 1\n"}
+
+
+def test_a_moodle_download_imports(tmp_path):
+    """Moodle's "Download all submissions": a folder per student, and the flat form."""
+    dl = tmp_path / "moodle"
+    (dl / "Ada Lovelace_1234_assignsubmission_file_").mkdir(parents=True)
+    (dl / "Ada Lovelace_1234_assignsubmission_file_" / "12.3.py").write_text("L = 'ada'\n")
+    (dl / "Ada Lovelace_1235_assignsubmission_file_").mkdir()                      # a namesake
+    (dl / "Ada Lovelace_1235_assignsubmission_file_" / "12_3.py").write_text("L = 'other'\n")
+    (dl / "Participant_77_assignsubmission_file_").mkdir()                         # blind marking
+    (dl / "Participant_77_assignsubmission_file_" / "12.3.py").write_text("L = 'blind'\n")
+    (dl / "Bob Babbage_1236_assignsubmission_file_12.3.py").write_text("L = 'bob'\n")  # flat
+    res = _import(dl, tmp_path / "out")
+    assert res.exit_code == 0, res.output
+    assert res.output.rstrip().splitlines()[-1].startswith("moodle: 4 files of 4 students")
+    assert _files(tmp_path / "out") == {
+        "1234_Ada_Lovelace/12.3.py": "L = 'ada'\n", "1235_Ada_Lovelace/12.3.py": "L = 'other'\n",
+        "1236_Bob_Babbage/12.3.py": "L = 'bob'\n", "77/12.3.py": "L = 'blind'\n"}
+
+
+def test_a_download_with_nothing_to_import_is_refused(tmp_path):
+    dl = tmp_path / "download"
+    (dl / "Ada Lovelace").mkdir(parents=True)
+    (dl / "Ada Lovelace" / "12.3.py").write_text("L = 1\n")
+    res = _import(dl, tmp_path / "out")
+    assert res.exit_code == 2 and "nothing imported from" in res.stderr, res.output
+    assert len(res.stderr.strip().splitlines()) == 1

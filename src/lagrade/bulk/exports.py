@@ -41,10 +41,11 @@ def spreadsheet_safe(cell: str | float) -> str:
     """A CSV cell that no spreadsheet runs as a formula (OWASP's CSV injection advice).
 
     Text that begins like a formula gets a leading ``'``, so that it is read as text; a number (an
-    ``int`` or ``float`` lagrade computed, such as a score) is formatted, never prefixed."""
+    ``int`` or ``float`` lagrade computed, such as a score) is formatted, never prefixed. Leading
+    white space is looked through (`` =1+1``: spreadsheets trim it on import and run the rest)."""
     if isinstance(cell, (int, float)):
         return _fmt(cell)
-    return "'" + cell if cell.startswith(FORMULA_STARTS) else cell
+    return "'" + cell if cell.startswith(FORMULA_STARTS) or cell.lstrip().startswith(FORMULA_STARTS) else cell
 
 
 def _csv(rows: Iterable[Iterable[str | float]]) -> str:
@@ -106,11 +107,28 @@ def not_on_roster(book: Gradebook, roster: dict[str, dict[str, str]]) -> list[st
     return out
 
 
+#: what ``canvas_csv`` does for a roster student with no folder (``--missing``). Canvas's importer
+#: (canvas-lms ``GradebookImporter#no_change_to_value?``) treats an empty cell over an existing score
+#: as a change and removes the score; a student who is not in the file at all is left untouched.
+MISSING = ("keep", "zero", "blank")
+
+
+def roster_without_folder(book: Gradebook, roster: dict[str, dict[str, str]]) -> list[dict[str, str]]:
+    """The roster's students that no student folder names."""
+    named = {id(r) for s in book.students if (r := roster.get(s.student)) is not None}
+    return [r for r in roster_rows(roster) if id(r) not in named]
+
+
 def canvas_csv(book: Gradebook, roster: dict[str, dict[str, str]] | None = None, *,
-               missing: float | None = 0.0) -> str:
-    """Canvas's gradebook import. With a roster: one row per roster student, Canvas's ids from the
-    roster, ``missing`` points (None: an empty cell, which leaves Canvas's grade as it is) for a
-    student with no folder; folders not on the roster are left out (see :func:`not_on_roster`)."""
+               missing: float | str | None = "keep") -> str:
+    """Canvas's gradebook import. With a roster: one row per roster student with a folder, Canvas's
+    ids from the roster; a roster student with no folder is left out (``"keep"``: Canvas keeps what
+    it has), gets ``0`` (``"zero"`` or a number) or an empty cell (``"blank"`` or None: Canvas
+    *removes* an existing score). Folders not on the roster are left out (:func:`not_on_roster`)."""
+    if missing == "zero":
+        missing = 0.0
+    elif missing == "blank":
+        missing = None
     rows = [CANVAS_ID_COLUMNS + [canvas_column(book)], ["Points Possible", "", "", "", "", book.possible]]
     if roster is None:
         for s in book.students:
@@ -123,6 +141,8 @@ def canvas_csv(book: Gradebook, roster: dict[str, dict[str, str]] | None = None,
             by_row.setdefault(id(r), s)
     for r in roster_rows(roster):
         s = by_row.get(id(r))
+        if s is None and missing == "keep":
+            continue
         points = s.points if s is not None else ("" if missing is None else missing)
         rows.append([r.get(c) or "" for c in CANVAS_ID_COLUMNS] + [points])
     return _csv(rows)
@@ -141,15 +161,17 @@ def overrides_of(s: StudentGrade) -> list[str]:
 
 def plain_csv(book: Gradebook) -> str:
     """One row per student; ``jail``: the sandbox layers of their files (each distinct one, ``; ``);
-    ``overrides``: the parts whose score an instructor set (``lagrade override``), with the reason."""
+    ``overrides``: the parts whose score an instructor set (``lagrade override``), with the reason;
+    ``late``: ``late`` when the LMS download marked the submission late (``lagrade import``)."""
     pids = book.assignment.ids
-    rows = [["student", *pids, "total", "possible", *(f"{p} status" for p in pids), "jail", "overrides"]]
+    rows = [["student", *pids, "total", "possible", *(f"{p} status" for p in pids), "jail", "overrides", "late"]]
     for s in book.students:
         g = s.problems
         jails = dict.fromkeys(j for p in pids if (j := file_jail(g[p])))
+        late = book.lms.get(s.student, {}).get("late")
         rows.append([s.student, *(g[p].points for p in pids), s.points, s.possible,
                      *(g[p].outcome if g[p].outcome != "failed" else f"failed: {g[p].status}" for p in pids),
-                     "; ".join(jails), "; ".join(overrides_of(s))])
+                     "; ".join(jails), "; ".join(overrides_of(s)), "late" if late else ""])
     return _csv(rows)
 
 

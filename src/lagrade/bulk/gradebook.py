@@ -49,6 +49,8 @@ class Gradebook:
     students: list[StudentGrade]
     skipped: list[tuple[str, str]]
     grader_version: str
+    #: student -> what ``lagrade import`` learnt from the LMS: ``canvas_user_id``, ``name``, ``late``
+    lms: dict[str, dict] = field(default_factory=dict)
 
     @property
     def possible(self) -> float:
@@ -94,4 +96,9 @@ def load_gradebook(db: Path | str) -> Gradebook:
                                                  row["path"])
             students.append(StudentGrade(name, grades))
         skipped = [(r["path"], r["reason"]) for r in store.skipped()]
-        return Gradebook(assignment, students, skipped, store.meta("grader_version") or "")
+        try:
+            lms = json.loads(store.meta("lms") or "{}")
+        except ValueError:
+            lms = {}
+        return Gradebook(assignment, students, skipped, store.meta("grader_version") or "",
+                         lms if isinstance(lms, dict) else {})

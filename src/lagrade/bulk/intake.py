@@ -6,11 +6,16 @@ that matches no problem is reported too. Used by ``lagrade import`` (Canvas's fl
 Gradescope's export folders) and by the Gradescope autograder (one submission's files).
 
 Canvas names each file of a "Download Submissions" zip ``<name>_<user id>_<attachment id>_<file>``
-(``studenttest_3143_207797_zipsubmission.zip`` in instructure/canvas-lms#2406)
-(``<name>_late_<user id>_...`` when late; the name is the student's sortable name, lower case,
-without spaces or punctuation) and a resubmitted file ``<file>-<n>.py``; the older
-``<login>_<submission id>_<file>`` form is read as well. Gradescope's "Export Submissions" holds
-one ``submission_<id>/`` folder per submission and ``submission_metadata.yml`` naming its submitters.
+(``studenttest_3143_207797_zipsubmission.zip`` in instructure/canvas-lms#2406; canvas-lms's
+``ContentZipper#get_filename``: ``[name, "LATE" if late, user id].join("_")`` with every non-word
+character removed and lower-cased, so ``<name>_late_<user id>_...`` when late and a name may hold
+``_``); ``anon_<anonymous id>_<attachment id>_<file>`` under anonymous grading; a resubmitted file
+``<file>-<n>.py``; the older ``<login>_<submission id>_<file>`` form is read as well. Files are
+grouped by Canvas user id, never by name: two students who share a name stay two. Gradescope's
+"Export Submissions" holds one ``submission_<id>/`` folder per submission and
+``submission_metadata.yml`` naming its submitters. Moodle's "Download all submissions" holds a
+folder ``<Full Name>_<participant id>_assignsubmission_file_`` per student (or flat files with
+that prefix). A student's ``.zip`` is unpacked.
 """
 
 from __future__ import annotations
@@ -109,8 +114,67 @@ def find_answers(folder: Path, ids: list[str]) -> Found:
 
 # ---------------------------------------------------------------------------------------- import
 
-_CANVAS = re.compile(r"^(?P<name>[^_]+)_(?:(?:late|LATE)_)?(?P<uid>\d+)_(?P<aid>\d+)_(?P<file>.+)$")
-_CANVAS_SHORT = re.compile(r"^(?P<name>[^_]+)_(?:(?:late|LATE)_)?(?P<sid>\d+)_(?P<file>.+)$")
+#: the tail of a Canvas download name after the student's name: ``_[late_]<user id>_<attachment id>_<file>``
+_CANVAS_TAIL = re.compile(r"_(?:(?P<late>late)_)?(?P<uid>\d+)_(?P<aid>\d+)_(?P<file>.+)$", re.IGNORECASE)
+#: anonymous grading: ``[late_]anon_<anonymous id>[_late]_<attachment id>_<file>`` (no name, no user id)
+_CANVAS_ANON = re.compile(r"^(?:(?P<late1>late)_)?anon_(?P<anon>[A-Za-z0-9]{1,16})_(?:(?P<late2>late)_)?"
+                          r"(?P<aid>\d+)_(?P<file>.+)$", re.IGNORECASE)
+_CANVAS_SHORT = re.compile(r"^(?P<name>[^_]+)_(?:(?P<late>late)_)?(?P<sid>\d+)_(?P<file>.+)$", re.IGNORECASE)
+#: a student's zip inside a download: at most this many members and bytes are unpacked
+ZIP_MAX_MEMBERS = 200
+ZIP_MAX_BYTES = 20_000_000
+
+
+@dataclass(frozen=True)
+class CanvasName:
+    """What a Canvas "Download Submissions" file name says: whose file (``key``: their Canvas user id,
+    ``anon_<id>`` under anonymous grading, else the login of the old form), late or not, and its name."""
+
+    key: str
+    name: str        # the name part as Canvas wrote it ("" when anonymous)
+    uid: str         # the Canvas user id ("" when anonymous or the old form)
+    late: bool
+    file: str        # the file's name as the student uploaded it
+
+
+def canvas_names(name: str) -> list[CanvasName]:
+    """Every way ``name`` reads as a Canvas download name, the likeliest first.
+
+    Canvas writes ``<name>[_late]_<user id>_<attachment id>_<file>`` with the student's sortable name
+    stripped to word characters and lower-cased (``o_brienmary``: underscores stay) and ``_<digits>_``
+    taken out of it, so the first ``_<digits>_<digits>_`` is normally where the name ends; a name that
+    ends in ``_<digits>`` makes a later split possible as well, so each one is returned."""
+    out: list[CanvasName] = []
+    if m := _CANVAS_ANON.match(name):
+        out.append(CanvasName("anon_" + m["anon"].lower(), "", "", bool(m["late1"] or m["late2"]), m["file"]))
+    for i, ch in enumerate(name):
+        if ch == "_" and i > 0 and (m := _CANVAS_TAIL.match(name, i)):
+            who = name[:i]
+            if who.lower() == "anon":
+                continue
+            if who.lower().endswith("_late") and not m["late"]:  # "<name>_late_<uid>": the late marker
+                continue
+            out.append(CanvasName(m["uid"], who, m["uid"], bool(m["late"]), m["file"]))
+    if m := _CANVAS_SHORT.match(name):
+        out.append(CanvasName(m["name"], m["name"], "", bool(m["late"]), m["file"]))
+    return out
+
+
+def parse_canvas(name: str, ids: list[str], uids: set[str] = frozenset()) -> CanvasName | None:
+    """The reading of a Canvas download name: a Canvas user id the roster knows first, then the first
+    one whose file names a problem (``jdoe_555_12_22.py`` is jdoe's ``12_22.py``, not user 555's
+    ``22.py``), then the first one."""
+    forms = canvas_names(name)
+    if not forms:
+        return None
+    return next((f for f in forms if f.uid and f.uid in uids),
+                next((f for f in forms if match_name(f.file, ids)), forms[0]))
+
+
+def parse_canvas_name(name: str, ids: list[str]) -> tuple[str, str, str] | None:
+    """(student, canvas user id or "", original file name): :func:`parse_canvas` as a tuple."""
+    f = parse_canvas(name, ids)
+    return (f.name or f.key, f.uid, f.file) if f else None
 
 
 @dataclass
@@ -119,6 +183,12 @@ class ImportReport:
     notes: list[str] = field(default_factory=list)                # near misses, several files, no match
     students: list[str] = field(default_factory=list)
     kind: str = ""
+    #: student folder -> what the LMS said of them: ``canvas_user_id``, ``name``, ``late``
+    lms: dict[str, dict] = field(default_factory=dict)
+
+
+#: written into the submissions folder by ``lagrade import``; ``lagrade grade`` keeps it in the gradebook
+MANIFEST = ".lagrade-import.json"
 
 
 def _student_folder(name: str) -> str:
@@ -126,20 +196,63 @@ def _student_folder(name: str) -> str:
     return s[:200]
 
 
-def parse_canvas_name(name: str, ids: list[str]) -> tuple[str, str, str] | None:
-    """(student, canvas user id or "", original file name) of a Canvas download's file name.
+def _unzip(archive: Path, into: Path, shown: str) -> tuple[list[Path], list[str]]:
+    """The regular files of a student's zip, unpacked under ``into``; what was left out, said.
 
-    Both forms are tried; the one whose file part names a problem wins (``jdoe_555_12_22.py`` is
-    jdoe's ``12_22.py``, not a user 555's ``22.py``)."""
-    forms = []
-    if m := _CANVAS.match(name):
-        forms.append((m["name"], m["uid"], m["file"]))
-    if m := _CANVAS_SHORT.match(name):
-        forms.append((m["name"], "", m["file"]))
-    for form in forms:
-        if match_name(form[2], ids):
-            return form
-    return forms[0] if forms else None
+    Nothing leaves ``into`` (absolute names, ``..`` and links are refused), and a zip bomb stops at
+    :data:`ZIP_MAX_MEMBERS` members or :data:`ZIP_MAX_BYTES` bytes."""
+    import zipfile
+
+    notes: list[str] = []
+    files: list[Path] = []
+    try:
+        with zipfile.ZipFile(archive) as z:
+            total = 0
+            members = [i for i in z.infolist() if not i.is_dir()]
+            if len(members) > ZIP_MAX_MEMBERS:
+                return [], [f"{shown}: a zip of {len(members)} files (more than {ZIP_MAX_MEMBERS}): not unpacked"]
+            for info in members:
+                parts = Path(info.filename.replace("\\", "/")).parts
+                mode = (info.external_attr >> 16) & 0o170000
+                if info.filename.startswith("/") or ".." in parts or mode == stat.S_IFLNK or not parts \
+                        or parts[0].startswith("__MACOSX"):
+                    notes.append(f"{shown}: {info.filename} in the zip is not a plain file inside it: not unpacked")
+                    continue
+                total += info.file_size
+                if total > ZIP_MAX_BYTES:
+                    notes.append(f"{shown}: larger than {ZIP_MAX_BYTES // 1_000_000} MB unpacked: the rest not unpacked")
+                    break
+                target = into.joinpath(*parts)
+                target.parent.mkdir(parents=True, exist_ok=True)
+                with z.open(info) as src, open(target, "wb") as dst:
+                    shutil.copyfileobj(src, dst, 1 << 16)
+                files.append(target)
+    except (zipfile.BadZipFile, OSError, RuntimeError, NotImplementedError) as exc:
+        notes.append(f"{shown}: a zip that cannot be unpacked ({exc}): not imported")
+    return files, notes
+
+
+#: Moodle's "Download all submissions": a folder ``<Full Name>_<participant id>_assignsubmission_file_``
+#: per student (``Participant_<id>_...`` with blind marking), or, with "Download submissions in
+#: folders" off, flat files ``<Full Name>_<participant id>_assignsubmission_file_<file>``
+_MOODLE = re.compile(r"^(?P<name>.*?)_(?P<id>\d+)_assignsubmission_(?P<plugin>[a-z]+)_(?P<file>.*)$")
+
+
+def _moodle_entries(source: Path) -> list[tuple[Path, str, str, str]]:
+    """(file, student's name, participant id, the file's own name) of a Moodle download; [] if it is not one."""
+    out = []
+    for entry in sorted(source.iterdir()):
+        m = _MOODLE.match(entry.name)
+        if m is None or entry.is_symlink():
+            continue
+        name = "" if m["name"].lower() == "participant" else m["name"]
+        if entry.is_dir() and not m["file"]:
+            for f in sorted(entry.rglob("*")):
+                if _regular(f) and not any(x.startswith(".") for x in f.relative_to(entry).parts):
+                    out.append((f, name, m["id"], f.name))
+        elif _regular(entry) and m["file"]:
+            out.append((entry, name, m["id"], m["file"]))
+    return out
 
 
 def _gradescope_metadata(path: Path) -> dict[str, str]:
@@ -170,67 +283,146 @@ def import_downloads(source: Path, ids: list[str], dest: Path, roster: dict[str,
                      ) -> ImportReport:
     """Copy the answer files of an LMS download into ``dest/<student>/<problem-id>.<ext>``.
 
-    ``roster`` (``exports.read_roster``): a Canvas user id found there names the folder after the
-    roster's ``SIS Login ID`` (else its ``ID``), so that the Canvas export finds the student."""
+    Canvas: files are grouped by Canvas user id (two students who share a name stay two); the folder
+    is the roster's ``SIS Login ID`` (else its ``ID``) for a user id on ``roster``
+    (``exports.read_roster``), else ``<name>_<user id>`` (``anon_<id>`` under anonymous grading).
+    A student's ``.zip`` is unpacked. What the LMS said of each student (Canvas user id, late) is
+    written to ``dest/.lagrade-import.json`` for the gradebook."""
+    import json
+    import tempfile
+
     source, dest = Path(source), Path(dest)
     if not source.is_dir():
         raise FileNotFoundError(f"{source}: not a folder (unzip the LMS download first)")
     report = ImportReport()
     groups: dict[str, list[Path]] = {}
     shown: dict[Path, str] = {}
-    meta = next(iter(sorted(source.rglob("submission_metadata.yml"))), None)
-    subs = sorted(p for p in source.rglob("submission_*") if p.is_dir() and not p.is_symlink()
-                  and re.fullmatch(r"submission_\d+", p.name))
-    if meta is not None or subs:
-        report.kind = "gradescope"
-        names = _gradescope_metadata(meta) if meta else {}
-        for folder in subs:
-            student = _student_folder(names.get(folder.name, folder.name))
-            for f in sorted(folder.rglob("*")):
-                if _regular(f):
-                    groups.setdefault(student, []).append(f)
-                    shown[f] = str(f.relative_to(source))
-    else:
-        report.kind = "canvas"
-        for f in sorted(source.iterdir()):
-            if not _regular(f) or f.name.startswith("."):
+    originals: dict[Path, Path] = {}  # the name a file is matched on -> the file to copy
+    scratch = Path(tempfile.mkdtemp(prefix="lagrade-import-"))
+    try:
+        meta = next(iter(sorted(source.rglob("submission_metadata.yml"))), None)
+        subs = sorted(p for p in source.rglob("submission_*") if p.is_dir() and not p.is_symlink()
+                      and re.fullmatch(r"submission_\d+", p.name))
+        if meta is not None or subs:
+            report.kind = "gradescope"
+            names = _gradescope_metadata(meta) if meta else {}
+            for folder in subs:
+                student = _student_folder(names.get(folder.name, folder.name))
+                for f in sorted(folder.rglob("*")):
+                    if _regular(f):
+                        groups.setdefault(student, []).append(f)
+                        shown[f] = str(f.relative_to(source))
+        elif moodle := _moodle_entries(source):
+            report.kind = "moodle"
+            for f, name, who, as_named in moodle:
+                student = _student_folder(f"{who}_{name}" if name else who)
+                report.lms.setdefault(student, {"name": name, "moodle_participant_id": who})
+                matched_as = scratch / "names" / str(len(originals)) / as_named
+                originals[matched_as] = f
+                shown[matched_as] = shown[f] = str(f.relative_to(source))
+                groups.setdefault(student, []).append(matched_as)
+        else:
+            report.kind = "canvas"
+            uids = {r.get("ID", "").strip() for r in (roster or {}).values()} - {""}
+            by_key: dict[str, list[tuple[Path, CanvasName]]] = {}
+            for f in sorted(source.iterdir()):
+                if not _regular(f) or f.name.startswith("."):
+                    continue
+                parsed = parse_canvas(f.name, ids, uids)
+                if parsed is None:
+                    report.notes.append(f"{f.name}: not a Canvas download name (<name>_<user id>_<id>_<file>): "
+                                        "not imported")
+                    continue
+                by_key.setdefault(parsed.key, []).append((f, parsed))
+            taken: dict[str, str] = {}
+            for key, entries in sorted(by_key.items()):
+                first = entries[0][1]
+                row = roster.get(first.uid) if roster and first.uid else None
+                if row is not None and row.get("ID", "").strip() != first.uid:
+                    row = None  # the roster names this number in another column: not this user
+                if row is not None:
+                    student = _student_folder(row.get("SIS Login ID") or row.get("ID") or key)
+                elif first.uid:
+                    student = _student_folder(f"{first.name}_{first.uid}")
+                else:
+                    student = _student_folder(key)
+                if student in taken and taken[student] != key:
+                    student = _student_folder(f"{student}_{key}")
+                taken[student] = key
+                late = any(p.late for _, p in entries)
+                report.lms[student] = {"canvas_user_id": first.uid, "name": first.name, "late": late}
+                if first.key.startswith("anon_"):
+                    report.lms[student]["anonymous_id"] = first.key[len("anon_"):]
+                for f, parsed in entries:
+                    if parsed.file.lower().endswith(".zip"):
+                        into = scratch / f"{len(originals)}"
+                        files, notes = _unzip(f, into, f.name)
+                        report.notes += [f"{student}: {n}" for n in notes]
+                        for g in files:
+                            originals[g] = g
+                            shown[g] = f"{f.name}:{g.relative_to(into)}"
+                            groups.setdefault(student, []).append(g)
+                        continue
+                    renamed = scratch / "names" / str(len(originals)) / parsed.file
+                    originals[renamed] = f
+                    shown[renamed] = shown[f] = f.name
+                    groups.setdefault(student, []).append(renamed)
+        for student, files in sorted(groups.items()):
+            if report.kind != "canvas":  # a Gradescope or Moodle submission may hold zips too
+                more = []
+                for f in files:
+                    if f.suffix.lower() == ".zip":
+                        into = scratch / f"{len(originals)}-{len(more)}"
+                        got, notes = _unzip(f, into, shown.get(f, f.name))
+                        report.notes += [f"{student}: {n}" for n in notes]
+                        for g in got:
+                            shown[g] = f"{shown.get(f, f.name)}:{g.relative_to(into)}"
+                        more += got
+                files = files + more
+            found = choose(files, ids, lambda p: shown.get(p, p.name))
+            report.notes += [f"{student}: {n}" for n in found.notes]
+            if not found.chosen:
+                report.notes.append(f"{student}: no answer file for any problem of this assignment")
                 continue
-            parsed = parse_canvas_name(f.name, ids)
-            if parsed is None:
-                report.notes.append(f"{f.name}: not a Canvas download name (<name>_<user id>_<id>_<file>): not imported")
-                continue
-            name, uid, original = parsed
-            row = (roster or {}).get(uid) if uid else None
-            student = _student_folder((row.get("SIS Login ID") or row.get("ID") or name) if row else name)
-            renamed = f.with_name(original)
-            groups.setdefault(student, []).append(f)
-            shown[f] = f.name
-            shown[renamed] = f.name
-    for student, files in sorted(groups.items()):
-        # Canvas: match on the original file name, copy from the download's file
-        originals = {}
-        for f in files:
-            parsed = parse_canvas_name(f.name, ids) if report.kind == "canvas" else None
-            originals[f.with_name(parsed[2]) if parsed else f] = f
-        found = choose(list(originals), ids, lambda p: shown.get(originals.get(p, p), p.name))
-        report.notes += [f"{student}: {n}" for n in found.notes]
-        if not found.chosen:
-            report.notes.append(f"{student}: no answer file for any problem of this assignment")
-            continue
-        report.students.append(student)
-        (dest / student).mkdir(parents=True, exist_ok=True)
-        for pid, f in found.chosen.items():
-            src = originals[f]
-            target = dest / student / f"{pid}{f.suffix.lower()}"
-            for other in ANSWER_SUFFIXES:  # a .toml from an earlier import must not sit beside the new .py
-                stale = dest / student / f"{pid}{other}"
-                if other != f.suffix.lower() and stale.exists():
-                    stale.unlink()
-            try:
-                shutil.copyfile(src, target)
-            except OSError as exc:  # an unreadable file is said, and the import goes on
-                report.notes.append(f"{student}: {shown.get(src, src.name)} cannot be read ({exc.strerror or exc}): "
-                                    "not imported")
-                continue
-            report.copied.append((shown.get(src, src.name), str(target.relative_to(dest))))
+            report.students.append(student)
+            (dest / student).mkdir(parents=True, exist_ok=True)
+            for pid, f in found.chosen.items():
+                src = originals.get(f, f)
+                target = dest / student / f"{pid}{f.suffix.lower()}"
+                for other in ANSWER_SUFFIXES:  # a .toml from an earlier import must not sit beside the new .py
+                    stale = dest / student / f"{pid}{other}"
+                    if other != f.suffix.lower() and stale.exists():
+                        stale.unlink()
+                try:
+                    shutil.copyfile(src, target)
+                except OSError as exc:  # an unreadable file is said, and the import goes on
+                    report.notes.append(f"{student}: {shown.get(f, src.name)} cannot be read "
+                                        f"({exc.strerror or exc}): not imported")
+                    continue
+                report.copied.append((shown.get(f, src.name), str(target.relative_to(dest))))
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+    report.lms = {k: v for k, v in report.lms.items() if k in report.students}
+    if report.lms:
+        dest.mkdir(parents=True, exist_ok=True)
+        path = dest / MANIFEST
+        old = {}
+        try:
+            old = json.loads(path.read_text(encoding="utf-8")).get("students", {})
+        except (OSError, ValueError, AttributeError):
+            pass
+        path.write_text(json.dumps({"kind": report.kind, "students": {**old, **report.lms}}, indent=1,
+                                   sort_keys=True), encoding="utf-8")
     return report
+
+
+def read_manifest(folder: Path) -> dict[str, dict]:
+    """student folder -> what the LMS said of them (``lagrade import``'s manifest), or {}."""
+    import json
+
+    try:
+        data = json.loads((Path(folder) / MANIFEST).read_text(encoding="utf-8"))
+        students = data.get("students", {})
+        return {str(k): dict(v) for k, v in students.items() if isinstance(v, dict)}
+    except (OSError, ValueError, AttributeError, TypeError):
+        return {}

@@ -71,6 +71,8 @@ def scan(root: Path, problem_ids: list[str]) -> Layout:
         skipped.append(Skipped(str(p.relative_to(root)), reason))
 
     for entry in sorted(root.iterdir()):
+        if entry.name == ".lagrade-import.json":  # lagrade import's record of the LMS (intake.MANIFEST)
+            continue
         st = entry.lstat()
         if stat.S_ISLNK(st.st_mode):
             skip(entry, "a symbolic link (not followed)")

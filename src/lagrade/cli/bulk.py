@@ -106,6 +106,7 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
     except KeyboardInterrupt:
         err.print("interrupted: every submission graded so far is saved; run the same command to go on")
         sys.exit(130)
+    _keep_manifest(submissions, db)
     out = Console(highlight=False)
     rate = report.todo / report.seconds * 60 if report.seconds else 0.0
     out.print(f"{report.total} submissions: {report.todo} graded now ({report.failed} could not be graded), "
@@ -122,6 +123,19 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
         from lagrade.bulk.summary import render_summary
 
         render_summary(_book(db), out)
+
+
+def _keep_manifest(submissions: Path, db: Path) -> None:
+    """What ``lagrade import`` learnt from the LMS (Canvas user id, late) goes into the gradebook."""
+    import json
+
+    from lagrade.bulk.intake import read_manifest
+    from lagrade.bulk.store import Store
+
+    lms = read_manifest(submissions)
+    if lms:
+        with Store(db) as store:
+            store.set_meta("lms", json.dumps(lms, sort_keys=True))
 
 
 def _require_jail(unsafe: bool, err) -> None:
@@ -222,14 +236,19 @@ def _book(db: Path):
 @click.option("--student", help="For --format gradescope: whose results.json (needed with several students).")
 @click.option("--roster", type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="For --format canvas: a Canvas gradebook export, to use its student ids.")
-@click.option("--missing", type=click.Choice(["zero", "blank"]), default="zero", show_default=True,
-              help="For --format canvas with --roster: a roster student without a folder gets 0, or an empty "
-                   "cell (Canvas keeps their grade).")
-def export(db: Path, fmt: str, output: Path | None, student: str | None, roster: Path | None, missing: str) -> None:
+@click.option("--missing", type=click.Choice(["keep", "zero", "blank"]), default="keep", show_default=True,
+              help="For --format canvas with --roster, a roster student without a folder: keep (no row: Canvas "
+                   "keeps the grade it has), zero (0 points), blank (an empty cell: Canvas REMOVES the grade it has).")
+@click.option("--bom", is_flag=True,
+              help="Begin a CSV with a UTF-8 byte order mark, so that Excel shows accents right (Canvas reads it too).")
+def export(db: Path, fmt: str, output: Path | None, student: str | None, roster: Path | None, missing: str,
+           bom: bool) -> None:
     """Export the grades in DB: Canvas import CSV, plain CSV, Gradescope results.json, HTML report."""
     from lagrade.bulk import exports
 
     book = _book(db)
+    if bom and fmt not in ("canvas", "csv", "skipped"):
+        raise click.UsageError("--bom is for the CSV formats (canvas, csv, skipped)")
     if fmt == "html":
         if output is None:
             raise click.UsageError("--format html writes a folder: give it with --output")
@@ -239,9 +258,21 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
         return
     if fmt == "canvas":
         rows = _roster(roster) if roster else None
-        text = exports.canvas_csv(book, rows, missing=0.0 if missing == "zero" else None)
+        if rows is not None and book.students and len(exports.not_on_roster(book, rows)) == len(book.students):
+            raise GradebookError(
+                f"none of the {len(book.students)} student folders of {db} is on a row of {roster} (by SIS Login ID, "
+                f"SIS User ID, ID or Student), so every student would get {'no grade' if missing == 'keep' else missing}"
+                f"; import the download with `lagrade import ... --roster {roster}` and grade again")
+        text = exports.canvas_csv(book, rows, missing=missing)
         if rows is not None:
             lost = exports.not_on_roster(book, rows)
+            absent = exports.roster_without_folder(book, rows)
+            if absent:
+                what = {"keep": "left out (Canvas keeps the grade it has; --missing zero gives 0)",
+                        "zero": "given 0 (--missing zero)",
+                        "blank": "given an empty cell, which REMOVES the grade Canvas has (--missing blank)"}[missing]
+                click.echo(f"lagrade: {len(absent)} roster students have no folder and are {what}: "
+                           + ", ".join(r.get("Student") or r.get("ID") or "?" for r in absent), err=True)
             if lost:
                 click.echo(f"lagrade: {len(lost)} student folders are on no row of {roster} (or on a row another "
                            f"folder took) and are not in the export: {', '.join(lost)}", err=True)
@@ -254,6 +285,8 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
             text = exports.gradescope_json(book, student) + "\n"
         except (ValueError, KeyError) as exc:
             raise click.UsageError(str(exc).strip("'")) from None
+    if bom:
+        text = "\ufeff" + text
     if output is None:
         click.echo(text, nl=False)
     else:
@@ -314,7 +347,7 @@ def override(db: Path, student: str, problem: str, part: str, score: float | Non
 
 
 @click.command("import")
-@click.argument("download", type=click.Path(exists=True, file_okay=False, path_type=Path))
+@click.argument("download", type=click.Path(exists=True, path_type=Path))
 @click.option("--assignment", "-a", "assignment_path", required=True,
               type=click.Path(exists=True, dir_okay=False, path_type=Path), help="The assignment TOML file.")
 @click.option("--output", "-o", type=click.Path(file_okay=False, path_type=Path), required=True,
@@ -324,18 +357,39 @@ def override(db: Path, student: str, problem: str, part: str, score: float | Non
 @problems_option
 def import_(download: Path, assignment_path: Path, output: Path, roster: Path | None,
             problems_dir: tuple[Path, ...]) -> None:
-    """Turn an unzipped LMS download (Canvas's submissions, Gradescope's export) into a submissions folder.
+    """Turn an LMS download (Canvas's submissions, Gradescope's export, Moodle's submissions; the zip
+    or the folder it unzips to) into a submissions folder.
 
     Files named nearly right (12_22.py, 12.22 (1).py, 12.22.PY, hw7-12.22.py) are taken and listed;
-    files that match no problem are listed too."""
-    from lagrade.bulk.intake import import_downloads
+    files that match no problem are listed too. A download from which nothing can be imported is
+    refused (exit 2)."""
+    from lagrade.bulk.intake import _unzip, import_downloads
 
     a = _assignment(assignment_path, problems_dir)
-    report = import_downloads(download, a.ids, output, _roster(roster) if roster else None)
+    rows = _roster(roster) if roster else None
+    scratch = None
+    try:
+        if download.is_file():
+            scratch = Path(tempfile.mkdtemp(prefix="lagrade-download-"))
+            _, notes = _unzip(download, scratch, download.name)
+            if notes and not any(scratch.iterdir()):
+                raise GradebookError(f"{download}: {notes[0].split(': ', 1)[1]}")
+            source = scratch
+        else:
+            source = download
+        report = import_downloads(source, a.ids, output, rows)
+    finally:
+        if scratch is not None:
+            shutil.rmtree(scratch, ignore_errors=True)
     for note in report.notes:
         click.echo(f"  {note}")
+    if not report.students:
+        raise GradebookError(f"nothing imported from {download}: no file in it is an answer to {a.name} in a Canvas "
+                             "(<name>_<user id>_<id>_<file>), Gradescope (submission_<id>/) or Moodle "
+                             "(<Name>_<id>_assignsubmission_file_/) download; the notes above say what was found")
+    late = sum(1 for v in report.lms.values() if v.get("late"))
     click.echo(f"{report.kind or 'download'}: {len(report.copied)} files of {len(report.students)} students -> "
-               f"{output}; {len(report.notes)} notes above")
+               f"{output}" + (f" ({late} late)" if late else "") + f"; {len(report.notes)} notes above")
 
 
 @click.command("report")
