@@ -12,6 +12,7 @@ import json
 import os
 import re
 import shutil
+import stat
 import subprocess
 import sys
 import zipfile
@@ -189,11 +190,20 @@ def test_setup_sh_installs_the_wheel_into_a_venv(autograder, tmp_path):
     run_autograder with the venv it made. Needs PyPI for lagrade's dependencies: minutes."""
     root = tmp_path / "root"
     install_fake_root(autograder, root)
-    env = {**os.environ, "AUTOGRADER_ROOT": str(root), "LAGRADE_SETUP_PYTHON": sys.executable}
+    cache = tmp_path / "cache"
+    env = {**os.environ, "AUTOGRADER_ROOT": str(root), "LAGRADE_SETUP_PYTHON": sys.executable,
+           "LAGRADE_CACHE": str(cache)}
     env.pop("VIRTUAL_ENV", None)
     proc = subprocess.run(["bash", str(root / "source" / "setup.sh")], env=env, capture_output=True, text=True,
                           timeout=1800)
     assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+    # the reference cache is built, and the key is the grader's uid's alone (0700)
+    assert list(cache.iterdir()), proc.stdout[-2000:]
+    data = subprocess.run([str(root / "venv" / "bin" / "python"), "-c",
+                           "from lagrade.library import data_root; print(data_root())"],
+                          env=env, capture_output=True, text=True).stdout.strip()
+    for d in (Path(data), cache, root / "source"):
+        assert stat.S_IMODE(d.stat().st_mode) == 0o700, d
     shutil.copyfile(REPO / "reference_solutions/12.3/answer.py", root / "submission" / "12.3.py")
     proc = subprocess.run([str(root / "run_autograder")], env={**env, "LAGRADE_PYTHON": ""}, capture_output=True,
                           text=True, timeout=600)

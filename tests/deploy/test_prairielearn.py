@@ -69,6 +69,8 @@ def test_the_build_folder_and_the_question(built):
     docker = (built / "Dockerfile").read_text()
     wheel, data_wheel = next(built.glob("lagrade-*.whl")).name, next(built.glob("lagrade_chapter12-*.whl")).name
     assert f"COPY {wheel} {data_wheel} /tmp/" in docker and f"/tmp/{data_wheel} &&" in docker and f"COPY lagrade-pl-grade {info['externalGradingOptions']['entrypoint']}" in docker
+    # the key is the grader's uid's alone in the image: problem data and cache 0700 after the cache is built
+    assert docker.index("cache build") < docker.index("chmod 0700 \"$d\"") and "data_root()" in docker
     data = {"params": {}}
     runpy.run_path(str(_question(built) / "server.py"))["generate"](data)
     assert data["params"]["lagrade"]["problem"] == "12.43"

@@ -140,16 +140,11 @@ def _keep_manifest(submissions: Path, db: Path) -> None:
 
 def _require_jail(unsafe: bool, err) -> None:
     """Refuse to run a class's files where the OS jail cannot be built, unless told they are trusted."""
-    from lagrade.jail import kernel, zygote
+    from lagrade.deploy.jailcheck import probe_layers
+    from lagrade.jail import kernel
 
-    try:
-        probe = zygote.Zygote()
-        try:
-            lacking = kernel.missing_minimum(probe.hello()["active"])
-        finally:
-            probe.close()
-    except OSError as exc:
-        lacking = f"the sandbox could not start ({exc})"
+    active, _, failed = probe_layers()
+    lacking = failed or kernel.missing_minimum(active)
     if lacking and not unsafe:
         raise click.ClickException(f"refusing to run students' files: {lacking} on this machine (`lagrade doctor` "
                                    "says why); give --unsafe-trusted-files only if you trust every file")
@@ -482,8 +477,20 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
     from lagrade.bulk.intake import find_answers
     from lagrade.bulk.runner import grade_folder
 
+    from lagrade.deploy.jailcheck import decide
+
     t0 = time.monotonic()
     a = _assignment(assignment_path, problems_dir)
+    source = assignment_path.parent
+    jail = decide(extra_keys=(source,) if any(source.glob("*.whl")) else ())
+    if not jail.ok:  # a clear result, never a grade made without the jail
+        out = {"score": 0.0, "output": "This submission was NOT graded: the autograder refused to run students' files "
+               f"in this container ({jail.lacking}). Your instructor will grade it; please tell them.",
+               "output_format": "text", "visibility": "visible", "stdout_visibility": "hidden", "tests": [],
+               "extra_data": {"jail": jail.as_dict()}}
+        results.parent.mkdir(parents=True, exist_ok=True)
+        results.write_text(json.dumps(out, indent=1), encoding="utf-8")
+        raise GradebookError(f"refusing to run students' files: {jail.lacking} (results.json says so) -> {results}")
     work = Path(tempfile.mkdtemp(prefix="lagrade-gradescope-"))
     try:
         folder = work / "class" / "submission"
@@ -500,6 +507,7 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
         grade_folder(work / "class", a, db, workers=workers, problems_dirs=problems_dir)
         book = load_gradebook(db)
         out = gradescope_results(book, book.student("submission"), execution_time=time.monotonic() - t0)
+        out["extra_data"] = {**out.get("extra_data", {}), "jail": jail.as_dict()}
         if notes:
             sep = "<br>" if out["output_format"] == "html" else "\n\n" if out["output_format"] == "md" else "\n"
             from html import escape

@@ -51,6 +51,22 @@ fi
 "$PY" -m venv "$ROOT/venv"
 "$ROOT/venv/bin/python" -m pip install --quiet --upgrade pip
 "$ROOT/venv/bin/python" -m pip install "$SRC"/lagrade-*.whl "$SRC"/lagrade_chapter12-*.whl
+# the reference cache of the assignment's problems, built once here rather than at the first submissions
+EXTRA=()
+if [ -d "$SRC/problems" ]; then EXTRA=(--problems "$SRC/problems"); fi
+IDS="$("$ROOT/venv/bin/python" -c 'import sys; from lagrade.bulk.assignment import load_assignment
+print(" ".join(load_assignment(sys.argv[1]).ids))' "$SRC/assignment.toml")"
+# shellcheck disable=SC2086
+"$ROOT/venv/bin/python" -m lagrade cache build $IDS "${EXTRA[@]}" \
+  || echo "lagrade: the reference cache was not built; grading builds it"
+# the key for the grader's uid (root) only: answers run as another uid, and where the container gives
+# no mount namespace and no Landlock that uid is what keeps them from the problem data, the references,
+# the cache and the wheels here (lagrade gradescope run checks it before grading)
+DATA="$("$ROOT/venv/bin/python" -c 'from lagrade.library import data_root; print(data_root() or "")')"
+CACHE="$("$ROOT/venv/bin/python" -c 'from lagrade.library import cache_dir; print(cache_dir() or "")')"
+for d in "$DATA" "$CACHE" "$SRC"; do
+  if [ -n "$d" ] && [ -e "$d" ]; then chmod -R go-rwx "$d"; chmod 0700 "$d"; fi
+done
 "$ROOT/venv/bin/python" -m lagrade doctor || true   # what the sandbox can use on this image, in the build log
 """
 

@@ -85,18 +85,26 @@ def grade_job(root: Path = Path("/grade")) -> dict:
     from lagrade.grade import check
     from lagrade.spec import SpecError
 
+    from lagrade.deploy.jailcheck import decide
+
     t0 = time.monotonic()
     job = read_job(root)
     if isinstance(job, dict):
         return job
     params, path = job
+    jail = decide()
+    if not jail.ok:  # not gradable: PrairieLearn does not count the attempt, and the reason is said
+        return _not_gradable([f"the grader refused to run students' files in this container: {jail.lacking}"],
+                             "This submission was not graded: the grader's sandbox is incomplete here; "
+                             "please tell your instructor.")
     try:
         result = check(params.problem, path, accuracy=params.accuracy)
     except SpecError as exc:
         return _not_gradable([f"the question is set up wrongly: {exc}"],
                              "This question's grader is misconfigured; please tell your instructor.")
     if result.parts and all(p.verdict == "invalid" for p in result.parts) and result.problems:
-        return _not_gradable(list(result.problems), "Your file could not be graded; fix it and submit again.")
+        return _not_gradable(list(result.problems), "Your file could not be graded; fix it and submit again.\n"
+                             f"(sandbox {jail.summary()})")
     tests = []
     for p in result.parts:
         shown = {"verdict": p.verdict, "feedback": p.feedback}
@@ -105,6 +113,7 @@ def grade_job(root: Path = Path("/grade")) -> dict:
                       "max_points": round(p.max_score, 6), "message": feedback_text(shown), "output": out})
     score = result.score / result.max_score if result.max_score else 0.0
     lines = [f"Problem {result.problem}: {result.score:g} / {result.max_score:g}"] + list(result.problems)
+    lines.append(f"(sandbox {jail.summary()})")
     return {"gradable": True, "score": min(1.0, max(0.0, score)), "message": "\n".join(lines),
             "format_errors": [], "tests": tests, "images": _image(result),
             "output": f"graded in {time.monotonic() - t0:.1f} s"}
@@ -132,7 +141,13 @@ FROM python:3.11-slim
 COPY {wheel} {data_wheel} /tmp/
 RUN pip install --no-cache-dir /tmp/{wheel} /tmp/{data_wheel} && rm /tmp/{wheel} /tmp/{data_wheel}
 COPY lagrade-pl-grade {entrypoint}
-RUN chmod 0755 {entrypoint} && python -m lagrade cache build || true
+RUN chmod 0755 {entrypoint} && (python -m lagrade cache build || true)
+# the key for the grader's uid (root) only: answers run as another uid, and where the container gives
+# no mount namespace and no Landlock that uid is what keeps them from the problem data, the references
+# and the cache (lagrade prairielearn grade checks it before grading)
+RUN for d in "$(python -c 'from lagrade.library import data_root; print(data_root() or "")')" \
+             "$(python -c 'from lagrade.library import cache_dir; print(cache_dir() or "")')"; do \
+      if [ -n "$d" ] && [ -e "$d" ]; then chmod -R go-rwx "$d" && chmod 0700 "$d"; fi; done
 """
 
 ENTRY_SCRIPT = """#!/bin/sh
