@@ -193,17 +193,36 @@ def check_against_problems(assignment: Assignment, problems_dirs: tuple[Path, ..
 def points(assigned: AssignedProblem, parts: list[dict], default_total: float) -> tuple[float, float]:
     """(points, points possible) of one problem from its stored parts (``part``, ``score``, ``max_score``).
 
-    ``default_total`` is the problem's own maximum (used when the assignment gives no weight).
+    ``default_total`` is the problem's own maximum (used when the assignment gives no weight). The
+    points are the exact share rounded to 1/POINT_UNITS (half up): the one rounding rule of every
+    export; :func:`part_points` splits exactly these points among the parts.
     """
     total = assigned.weight if assigned.weight is not None else default_total
-    if not parts:
-        return 0.0, total
-    weights = {p["part"]: assigned.parts.get(p["part"], p["max_score"]) for p in parts}
-    denom = sum(weights.values())
-    if denom <= 0:
-        return 0.0, total
-    frac = sum(weights[p["part"]] * (p["score"] / p["max_score"] if p["max_score"] else 0.0) for p in parts)
-    return round(total * frac / denom, 6), total
+    return _problem_units(assigned, parts, total) / POINT_UNITS, total
+
+
+def _weights(assigned: AssignedProblem, parts: list[dict]) -> list[float]:
+    return [assigned.parts.get(p["part"], p["max_score"]) for p in parts]
+
+
+def _frac(p: dict) -> float:
+    return min(1.0, max(0.0, p["score"] / p["max_score"])) if p["max_score"] else 0.0
+
+
+def _half_up(x: float) -> int:
+    """``x`` rounded half up, after cutting float noise (``3 * 0.1`` is 0.30000000000000004)."""
+    import math
+
+    return math.floor(round(x, 6) + 0.5)
+
+
+def _problem_units(assigned: AssignedProblem, parts: list[dict], total: float) -> int:
+    weights = _weights(assigned, parts)
+    denom = sum(weights)
+    if not parts or denom <= 0:
+        return 0
+    frac = sum(w * (p["score"] / p["max_score"] if p["max_score"] else 0.0) for w, p in zip(weights, parts))
+    return _half_up(total * frac / denom * POINT_UNITS)
 
 
 #: the precision, in points, of the per-part points the exports show (Gradescope's tests, the report)
@@ -229,11 +248,23 @@ def split_points(total: float, weights: list[float]) -> list[float]:
 
 def part_points(assigned: AssignedProblem, parts: list[dict], default_total: float) -> list[tuple[float, float]]:
     """(points earned, points possible) of each stored part, in the order given, with the weights that
-    :func:`points` uses; the possible points sum exactly to the problem's points (see :func:`split_points`)."""
+    :func:`points` uses: the possible points sum exactly to the problem's (see :func:`split_points`),
+    and the earned points sum exactly to :func:`points` (largest remainders again, each part within
+    its share), so that Gradescope's tests add up to the score the CSV and Canvas exports give."""
     total = assigned.weight if assigned.weight is not None else default_total
-    weights = [assigned.parts.get(p["part"], p["max_score"]) for p in parts]
-    out = []
-    for p, share in zip(parts, split_points(total, weights)):
-        frac = p["score"] / p["max_score"] if p["max_score"] else 0.0
-        out.append((round(share * min(1.0, max(0.0, frac)) * POINT_UNITS) / POINT_UNITS, share))
-    return out
+    shares = [round(x * POINT_UNITS) for x in split_points(total, _weights(assigned, parts))]
+    if len(shares) != len(parts):
+        return [(0.0, 0.0) for _ in parts]
+    raw = [share * _frac(p) for share, p in zip(shares, parts)]
+    earned = [min(share, int(r)) for share, r in zip(shares, raw)]
+    target = min(sum(shares), _problem_units(assigned, parts, total))
+    order = sorted(range(len(raw)), key=lambda i: (earned[i] - raw[i], i))  # the largest remainders first
+    while sum(earned) < target and any(earned[i] < shares[i] for i in order):
+        for i in order:
+            if sum(earned) < target and earned[i] < shares[i]:
+                earned[i] += 1
+    while sum(earned) > target and any(earned):
+        for i in reversed(order):
+            if sum(earned) > target and earned[i] > 0:
+                earned[i] -= 1
+    return [(e / POINT_UNITS, s / POINT_UNITS) for e, s in zip(earned, shares)]

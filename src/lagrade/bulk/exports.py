@@ -201,18 +201,57 @@ def readable(text: str) -> str:
     return text.replace("**", "^")
 
 
-def gradescope_results(book: Gradebook, student: StudentGrade, *, execution_time: float | None = None) -> dict:
+def say(text: str, fmt: str) -> str:
+    """``text`` (feedback, reasons, file names: student-supplied strings among them) as Gradescope's
+    ``fmt`` shows it: ``html`` escaped, line breaks kept as ``<br>``; ``md`` with HTML and Markdown
+    markup escaped; ``text`` as it is."""
+    from html import escape
+
+    if fmt == "html":
+        return escape(text).replace("\n", "<br>")
+    if fmt == "md":
+        # HTML markup escaped (Gradescope's Markdown passes raw HTML through), then what could make
+        # links, code or tables out of the text; an underscore inside a word is no markup
+        return re.sub(r"([\\`*\[\]|])", r"\\\1", escape(text, quote=False)).replace("\n", "  \n")
+    return text
+
+
+def _code_span(text: str) -> str:
+    """``text`` as a Markdown code span, which shows every character as it is (HTML too): fenced by
+    one backtick more than its longest run of them, on one line."""
+    text = " ".join(text.splitlines())
+    fence = "`" * (max((len(r) for r in re.findall(r"`+", text)), default=0) + 1)
+    pad = " " if text.startswith("`") or text.endswith("`") else ""
+    return f"{fence}{pad}{text}{pad}{fence}"
+
+
+def spec_parts(pid: str, problems_dirs: tuple[Path, ...] = ()) -> list[tuple[str, float]]:
+    """(part name, weight) of problem ``pid`` as its problem file gives them; [] if it cannot be read."""
+    try:
+        from lagrade.library import load_problem
+
+        return [(part.name, part.weight) for part in load_problem(pid, problems_dirs).parts]
+    except Exception:  # noqa: BLE001 - a results.json is still written, with one test for the problem
+        return []
+
+
+def gradescope_results(book: Gradebook, student: StudentGrade, *, execution_time: float | None = None,
+                       problems_dirs: tuple[Path, ...] = ()) -> dict:
     """Gradescope's autograder ``results.json`` for one student (Gradescope's "Autograder Specifications").
 
     One test per problem part, its ``max_score`` the part's share of the problem's points with the
     assignment's weights; the shares are multiples of 1/10000 that sum exactly to the assignment's
-    total, and ``score`` is the sum of the tests' scores. The assignment's ``[gradescope]`` options give
-    the visibilities and the output format; a message shared by every part of a problem (a file that
-    could not be graded) is said once, in the first part's test."""
+    total, and ``score`` is the sum of the tests' scores, which is the total the CSV and Canvas
+    exports give (:func:`lagrade.bulk.assignment.part_points`). A problem not handed in, or whose
+    file could not be used, has the same tests, from its problem file, at 0: Gradescope's per-test
+    statistics line up. The assignment's ``[gradescope]`` options give the visibilities and the
+    output format; every string is escaped for that format (:func:`say`); a message shared by every
+    part of a problem is said once, in the first part's test."""
     from lagrade.bulk.assignment import POINT_UNITS, part_points, split_points
 
     opts = book.assignment.gradescope
-    html = opts.output_format == "html"
+    fmt = opts.output_format
+    html = fmt == "html"
     tests: list[dict] = []
     units = 0
     per_problem: list[tuple[str, float, float, str]] = []
@@ -220,45 +259,58 @@ def gradescope_results(book: Gradebook, student: StudentGrade, *, execution_time
         ap = book.assignment.problem(pid)
         if not g.submitted or not g.parts:
             why = g.reason if g.submitted else f"No file {pid}.py or {pid}.toml was handed in."
-            share = split_points(g.possible, [1.0])[0]
-            tests.append({"name": f"{pid}", "number": f"{n}", "score": 0.0, "max_score": share, "status": "failed",
-                          "output": why, "tags": [pid], "visibility": opts.tests_visibility})
-            per_problem.append((pid, 0.0, share, "not handed in" if not g.submitted else g.reason))
+            names = spec_parts(pid, problems_dirs)
+            if not names:
+                share = split_points(g.possible, [1.0])[0]
+                tests.append({"name": f"{pid}", "number": f"{n}", "score": 0.0, "max_score": share,
+                              "status": "failed", "output": say(why, fmt), "tags": [pid],
+                              "visibility": opts.tests_visibility})
+            else:
+                zeros = [{"part": name, "score": 0.0, "max_score": weight} for name, weight in names]
+                for m, ((name, _), (_, share)) in enumerate(zip(names, part_points(ap, zeros, g.possible)), start=1):
+                    tests.append({"name": f"{pid} {name}", "number": f"{n}.{m}", "score": 0.0, "max_score": share,
+                                  "status": "failed", "output": say(why if m == 1 else f"See {pid} {names[0][0]}.", fmt),
+                                  "tags": [pid, name, "missing" if not g.submitted else "failed"],
+                                  "visibility": opts.tests_visibility})
+            per_problem.append((pid, 0.0, g.possible, "not handed in" if not g.submitted else g.reason))
             continue
         # a file that could not be used: every part carries the same reason, said once
         shared = (len(g.parts) > 1 and len({(feedback_text(p), p["verdict"]) for p in g.parts}) == 1
                   and g.parts[0]["verdict"] != "correct")
-        earned_total = 0.0
+        earned_units = 0
         for m, (p, (earned, possible)) in enumerate(zip(g.parts, part_points(ap, g.parts, g.possible)), start=1):
-            text = feedback_text(p)
+            text = say(feedback_text(p), fmt)
             if shared and m > 1:
-                text = f"See {pid} {g.parts[0]['part']}."
+                text = say(f"See {pid} {g.parts[0]['part']}.", fmt)
             if p.get("override"):
-                text = f"Score set by the instructor: {p['override']['reason']}" + (f"\n{text}" if text else "")
+                text = say(f"Score set by the instructor: {p['override']['reason']}", fmt) + (
+                    ("<br>" if html else "  \n" if fmt == "md" else "\n") + text if text else "")
             elif p.get("answer_text") and not (shared and m > 1):
                 read = (f"<math>{p['answer_mathml']}</math>" if html and p.get("answer_mathml")
-                        else f"`{readable(p['answer_text'])}`" if opts.output_format == "md"
-                        else readable(p["answer_text"]))
-                text += f"\n\nRead as: {read}"
+                        else _code_span(readable(p["answer_text"])) if fmt == "md"
+                        else say(readable(p["answer_text"]), fmt))
+                text += ("<br><br>" if html else "\n\n") + "Read as: " + read
             units += round(earned * POINT_UNITS)
-            earned_total += earned
+            earned_units += round(earned * POINT_UNITS)
             tests.append({"name": f"{pid} {p['part']}", "number": f"{n}.{m}", "score": earned, "max_score": possible,
                           "status": _status(earned, possible), "output": text,
                           "tags": [pid, p["part"], p["verdict"]], "visibility": opts.tests_visibility})
-        per_problem.append((pid, round(earned_total, 4), g.possible, g.reason if g.outcome == "failed" else ""))
+        per_problem.append((pid, earned_units / POINT_UNITS, g.possible,
+                            g.reason if g.outcome == "failed" else ""))
     score = units / POINT_UNITS
     title = book.assignment.title or book.assignment.name
     total = _fmt(sum(t["max_score"] for t in tests))
     if html:
         from html import escape
 
-        rows = "".join(f"<tr><td>{escape(pid)}</td><td>{_fmt(e)} / {_fmt(m)}</td><td>{escape(why)}</td></tr>"
+        rows = "".join(f"<tr><td>{escape(pid)}</td><td>{_fmt(e)} / {_fmt(m)}</td><td>{say(why, fmt)}</td></tr>"
                        for pid, e, m, why in per_problem)
         output = (f"<p><strong>{escape(title)}</strong>: {_fmt(score)} / {total}</p>"
                   f"<table><tr><th>problem</th><th>points</th><th></th></tr>{rows}</table>")
     elif opts.output_format == "md":
-        output = "\n".join([f"**{title}**: {_fmt(score)} / {total}", "", "| problem | points | |", "|---|---|---|",
-                            *(f"| {pid} | {_fmt(e)} / {_fmt(m)} | {why.replace('|', '/')} |"
+        output = "\n".join([f"**{say(title, fmt)}**: {_fmt(score)} / {total}", "", "| problem | points | |",
+                            "|---|---|---|",
+                            *(f"| {say(pid, fmt)} | {_fmt(e)} / {_fmt(m)} | {say(why, fmt).replace(chr(10), ' ')} |"
                               for pid, e, m, why in per_problem)])
     else:
         output = "\n".join([f"{title}: {_fmt(score)} / {total}",

@@ -36,7 +36,10 @@ class StudentGrade:
 
     @property
     def points(self) -> float:
-        return round(sum(p.points for p in self.problems.values()), 6)
+        from lagrade.bulk.assignment import POINT_UNITS
+
+        # each problem's points are whole 1/POINT_UNITS: summed as integers, no 14.999999999
+        return sum(round(p.points * POINT_UNITS) for p in self.problems.values()) / POINT_UNITS
 
     @property
     def possible(self) -> float:

@@ -467,6 +467,11 @@ def gradescope_build(assignment_path: Path, output: Path, wheel: Path | None, pr
     click.echo(f"{output}: {', '.join(names)}")
 
 
+#: the answer's memory bound on Gradescope when the assignment's [limits] gives none: below the
+#: 768 MB of Gradescope's default container, which also holds the grader
+GRADESCOPE_MEMORY_MB = 384
+
+
 def _gradescope_run(submission: Path, assignment_path: Path, results: Path, workers: int | None,
                     problems_dir: tuple[Path, ...]) -> None:
     import json
@@ -481,6 +486,8 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
 
     t0 = time.monotonic()
     a = _assignment(assignment_path, problems_dir)
+    if "memory_mb" not in a.limits.model_fields_set:  # Gradescope's container has 768 MB in all
+        a = a.model_copy(update={"limits": a.limits.model_copy(update={"memory_mb": GRADESCOPE_MEMORY_MB})})
     source = assignment_path.parent
     jail = decide(extra_keys=(source,) if any(source.glob("*.whl")) else ())
     if not jail.ok:  # a clear result, never a grade made without the jail
@@ -506,14 +513,14 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
         db = work / "grades.sqlite"
         grade_folder(work / "class", a, db, workers=workers, problems_dirs=problems_dir)
         book = load_gradebook(db)
-        out = gradescope_results(book, book.student("submission"), execution_time=time.monotonic() - t0)
+        out = gradescope_results(book, book.student("submission"), execution_time=time.monotonic() - t0,
+                                 problems_dirs=problems_dir)
         out["extra_data"] = {**out.get("extra_data", {}), "jail": jail.as_dict()}
         if notes:
-            sep = "<br>" if out["output_format"] == "html" else "\n\n" if out["output_format"] == "md" else "\n"
-            from html import escape
+            from lagrade.bulk.exports import say
 
-            said = [escape(n) if out["output_format"] == "html" else n for n in notes]
-            out["output"] += sep + sep.join(said)
+            sep = "<br>" if out["output_format"] == "html" else "\n\n" if out["output_format"] == "md" else "\n"
+            out["output"] += sep + sep.join(say(n, out["output_format"]) for n in notes)
         results.parent.mkdir(parents=True, exist_ok=True)
         results.write_text(json.dumps(out, indent=1), encoding="utf-8")
         click.echo(f"{out['score']:g} / {book.possible:g} -> {results}")
