@@ -30,6 +30,13 @@ class PartResult(BaseModel):
     read_as_text: str | None = Field(default=None, exclude=True, description="the same, for a terminal")
     review: str | None = Field(default=None, description="for instructors: why this verdict deserves a look (the "
                                                           "evidence could not decide it); never a reference value")
+    certified: bool | None = Field(default=None, description="a rejection at sampled states: true when ball "
+                                   "arithmetic proved the difference nonzero at an exact point (the certificate is "
+                                   "the instructor's), false when it could not (then `review` says so); null otherwise")
+    certificate: str | None = Field(default=None, exclude=True,
+                                    description="for instructors: the exact point and the enclosure that prove a "
+                                                "rejection; never serialized (the enclosure is a difference from "
+                                                "the reference)")
     detail: str | None = Field(default=None, exclude=True,
                                description="for instructors: the engine's traceback of an `error`; never "
                                            "serialized, so never in what a student is shown")

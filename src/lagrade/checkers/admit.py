@@ -69,6 +69,10 @@ class Screen:
 
     flagged: dict[sp.Basic, str] = field(default_factory=dict)
     settled: set[sp.Basic] = field(default_factory=set)
+    #: certificates of the refutations found while grading the part (`witness`)
+    certificates: list = field(default_factory=list)
+    #: refutations at sampled states that could not be certified
+    uncertified: int = 0
 
     def pending(self, expr: sp.Basic | None = None) -> list[str]:
         """Reasons not yet settled (for ``expr`` alone, or for every flagged expression)."""
@@ -101,6 +105,17 @@ def unproved(expr: sp.Basic) -> str | None:
         return None
     proved(expr)
     return _reasons(reasons)
+
+
+def witness(certificate) -> None:
+    """A refutation at sampled states, with its certificate (`lagrade.compare.certify`) or None."""
+    screen = _SCREEN.get()
+    if screen is None:
+        return
+    if certificate is None:
+        screen.uncertified += 1
+    else:
+        screen.certificates.append(certificate)
 
 
 def _reasons(reasons: list[str]) -> str:
@@ -447,8 +462,8 @@ def admitted(checker: Checker) -> Checker:
                 return refuse(part, _reasons(left), _nothing(part, "the engine could not evaluate it"))
             left = mine.pending()
             if res.score > 0 and left:
-                res = refuse(part, _reasons(left), res)
-            return res
+                return refuse(part, _reasons(left), res)
+            return _certified(res, mine)
         finally:
             _SCREEN.reset(token)
             if outer is not None:  # a checker run inside another's (general functions): the outer one sees it
@@ -456,6 +471,22 @@ def admitted(checker: Checker) -> Checker:
                 outer.settled |= mine.settled
 
     return run
+
+
+def _certified(res: PartResult, screen: Screen) -> PartResult:
+    """A verdict short of full marks decided at sampled states carries its certificate; one whose
+    refutation could not be certified is flagged for review, never a silent reject."""
+    if res.verdict not in ("incorrect", "partial") or res.method != "numeric":
+        return res
+    if screen.certificates and not screen.uncertified:
+        res.certified = True
+        res.certificate = "; ".join(c.text() for c in screen.certificates[:3])
+    else:
+        res.certified = False
+        note = ("rejected at sampled states in floating point; ball arithmetic could not certify "
+                f"{'every' if screen.certificates else 'the'} difference at an exact point")
+        res.review = f"{res.review}; {note}" if res.review else note
+    return res
 
 
 def _nothing(part: Part, feedback: str) -> PartResult:

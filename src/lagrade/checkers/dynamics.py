@@ -26,6 +26,7 @@ from lagrade.checkers.base import (
     read_expr,
     read_sympy,
 )
+from lagrade.compare.certify import Certificate, certify, outside_span
 from lagrade.compare.equations import CompiledRows, analyse_rows
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs
@@ -359,6 +360,7 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
             if constant else "It differs from the usual form by a total time derivative dF/dt, which gives "
                              "the same equations of motion.")
         return _decide(ctx, part, proof, traj, note)
+    _certify_lagrangian(mech, part, L_s, E_s, E_r, pts, groups, per)
     if c is not None and np.all(np.abs(c) > 1e-9):
         same = np.allclose(c, c[0], rtol=1e-6)
         factor = (factor_text(float(c[0])) or f"a constant factor ({in_kind(float(c[0]))})") if same \
@@ -573,6 +575,7 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
         proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
                                lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows))
         return _decide(ctx, part, proof, traj)
+    _certify_rows(mech, rows, an, compiled, argv, truth, pts, "accelerations", truth=True)
     _relabel(an, compiled, mech, pts, args, truth)
     named = _eom_mistake(part, mech, compiled, pts.args(args), list(mech.names))
     problems = [] if named is None else [named.rstrip(".")]
@@ -595,6 +598,86 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows)) \
         if len(rows) >= an.n else None
     return _wrong(part, an.fraction, named or _sentence(problems), traj, ctx.credit)
+
+
+def _certify_rows(mech: Mechanics, rows: list[sp.Expr], an, compiled: CompiledRows, argv, truth: np.ndarray, pts,
+                  what: str, **how) -> None:
+    """Each wrong row, certified nonzero at the true rates where it is farthest from holding; a system
+    with fewer equations than unknowns is short of them exactly; any other shortfall (a rank lost
+    between equations, a vanishing factor) is left uncertified, for review."""
+    if len(rows) < an.n:
+        admit.witness(Certificate(f"{len(rows)} equations for {an.n} {what}", {}, "a count"))
+        return
+    if not an.wrong:
+        admit.witness(None)
+        return
+    with np.errstate(all="ignore"):
+        g = np.abs(compiled.values(argv, truth))
+    for i in an.wrong:
+        row = np.where(np.isfinite(g[i]), g[i], -1.0)
+        k = int(np.argmax(row))
+        admit.witness(certify(f"your equation {i + 1} at the true {what}", rows[i],
+                              {s: v[k] for s, v in pts.values.items()}, mech=mech, **how))
+
+
+def _certify_lagrangian(mech: Mechanics, part: Part, L_s: sp.Expr, E_s: np.ndarray, E_r: np.ndarray, pts,
+                        groups: int, per: int) -> None:
+    """A wrong L's Lagrange equations are no constant multiple of the true ones: certified by two entries
+    (equation, state) of one group of shared parameters whose cross product is not zero; an L whose
+    equations are a multiple (c != 1) of the true ones, by one entry of their difference."""
+    rows_s, rows_r = mech.lagrange_rows(L_s), mech.EL
+    n = len(rows_r)
+    state = [*mech.s.q, *mech.s.qd, *mech.s.qdd]
+    with np.errstate(all="ignore"):
+        for g in range(groups):
+            ks = range(g * per, (g + 1) * per)
+            entries = [(i, k) for i in range(n) for k in ks]
+            best, pair = -1.0, None
+            for (i, k1) in entries:
+                for (j, k2) in entries:
+                    d = abs(E_s[i, k1] * E_r[j, k2] - E_s[j, k2] * E_r[i, k1])
+                    if np.isfinite(d) and d > best:
+                        best, pair = d, ((i, k1), (j, k2))
+            if pair is None or best <= 0:
+                continue
+            (i, k1), (j, k2) = pair
+            one = {x: sp.Symbol(f"{x.name}@1") for x in state}
+            two = {x: sp.Symbol(f"{x.name}@2") for x in state}
+            cross = rows_s[i].xreplace(one) * rows_r[j].xreplace(two) - rows_s[j].xreplace(two) * rows_r[i].xreplace(one)
+            point = {s: v[k1] for s, v in pts.values.items()}
+            point.update({one[x]: pts.values[x][k1] for x in state})
+            point.update({two[x]: pts.values[x][k2] for x in state})
+            cert = certify("the cross product of your Lagrange equations with the true ones at two states "
+                           "(zero for every pair if yours were a multiple of the true ones)", cross, point)
+            if cert is not None:
+                admit.witness(cert)
+                return
+    with np.errstate(all="ignore"):
+        gap = np.where(np.isfinite(E_s - E_r), np.abs(E_s - E_r), -1.0)
+    i, k = np.unravel_index(int(np.argmax(gap)), gap.shape)
+    admit.witness(certify(f"your Lagrange equation {i + 1} minus the true one", rows_s[i] - rows_r[i],
+                          {s: v[k] for s, v in pts.values.items()}) if gap[i, k] > 0 else None)
+
+
+def _certify_hamiltonian(mech: Mechanics, H_s: sp.Expr, pts) -> None:
+    """H - H_true depends on more than t: one of its derivatives in (q, p) is not zero at a phase point,
+    with dH_true/dp = q' and dH_true/dq = -dL/dq there."""
+    real = {x: sp.Dummy(x.name, real=True) for x in H_s.free_symbols if isinstance(x, sp.Symbol)}
+    back = {v: k for k, v in real.items()}
+
+    def d(x: sp.Symbol) -> sp.Expr:  # with real symbols: d|x|/dx is sign(x), not a complex form
+        return sp.diff(H_s.xreplace(real), real.get(x, x)).xreplace(back)
+
+    checks = [(d(p) - v, f"dH/d{p} minus the true {v}") for p, v in zip(mech.s.p, mech.s.qd)]
+    checks += [(d(q) + sp.diff(mech.L, q), f"dH/d{q} minus the true one") for q in mech.s.q]
+    for k in range(pts.K):
+        at = {s: v[k] for s, v in pts.values.items()}
+        for expr, what in checks:
+            cert = certify(what, expr, at, mech=mech, phase=True)
+            if cert is not None:
+                admit.witness(cert)
+                return
+    admit.witness(None)
 
 
 def _mass_at(mech: Mechanics, pts, at_rest: bool = False) -> np.ndarray:
@@ -690,6 +773,18 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
             if not (np.all(np.isfinite(a)) and np.abs(resid).max() <= 1e-7 * scale):
                 ok = False
         consistent.append(ok)
+    at = {**dict(zip(mech.s.q, eq_exprs)), **{v: 0 for v in [*mech.s.qd, *mech.s.qdd]}}
+
+    def affine(e: sp.Expr) -> list[sp.Expr]:  # [d e/d(state) | e], at equilibrium
+        return [*(sp.diff(e, v).xreplace(at) for v in state), e.xreplace(at)]
+
+    for i in [i for i, ok in enumerate(consistent) if not ok]:
+        k = 0
+        admit.witness(outside_span(
+            f"a minor of the true linearized equations stacked with your equation {i + 1} (zero if yours were "
+            "a combination of them)", [affine(e) for e in mech.EL], affine(rows[i]),
+            [np.append(A_r[j, :, k], g0_r[j, k]) for j in range(n)], np.append(A_s[i, :, k], g0[i, k]),
+            {s: v[k] for s, v in pts.values.items()}))
     use = [i for i, ok in enumerate(consistent) if ok and np.abs(A_s[i]).max() > 0]
     rank = min((np.linalg.matrix_rank(A_s[use, :, k]) for k in range(pts.K)), default=0) if use else 0
     fraction = 1.0 if rank >= n and all(consistent) else rank / max(n, len(rows))
@@ -760,6 +855,7 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
         proof, traj = _confirm(ctx, prove, lambda: _trajectory_hamilton(ctx, mech, part, student_rates, student_rows))
         note = "" if np.all(np.abs(diff) <= tol) else "It differs from the usual H by a function of t only."
         return _decide(ctx, part, proof, traj, note)
+    _certify_hamiltonian(mech, H_s, pts)
     message = _hamiltonian_diagnosis(part, mech, h_s, pts, groups, per, (q, p, t, params))
     traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, student_rows))
     return _wrong(part, 0.0, message, traj)
@@ -854,6 +950,7 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
     if an.fraction >= 1.0:
         traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, lambda: rows))
         return _decide(ctx, part, None, traj)
+    _certify_rows(mech, rows, an, compiled, pts.args(args), truth, pts, "rates", phase=True)
     problems = [f"equation {i + 1} (for {an.labels[i]}) does not hold for the true motion" for i in an.wrong]
     if an.vanishing_factor:
         problems.append("your equations hold, but one is multiplied by a factor that becomes zero within "

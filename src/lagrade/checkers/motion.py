@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from lagrade.checkers import admit
 from lagrade.checkers.base import (
     Context,
     InvalidAnswer,
@@ -14,6 +15,7 @@ from lagrade.checkers.base import (
     read_sympy,
     surplus,
 )
+from lagrade.compare.certify import Certificate, certify, outside_span
 from lagrade.numeric import evaluate
 from lagrade.reference import Mechanics, total_derivative
 from lagrade.result import PartResult
@@ -57,8 +59,16 @@ def check_conserved(ctx: Context, part: Part, value: object) -> PartResult:
         scale = max(float(np.nanmax(np.abs(grad))) if grad.size else 0.0, 1.0)
         if not np.all(np.isfinite(rate)) or np.abs(rate).max() > 1e-7 * scale * 10:
             notes.append(f"quantity {i} is not conserved")
+            k = int(np.nanargmax(np.where(np.isfinite(rate), np.abs(rate), -1.0)))
+            admit.witness(certify(f"the rate of change of your quantity {i} along the true motion",
+                                  total_derivative(studs[i - 1], mech.s), {s: v[k] for s, v in pts.values.items()},
+                                  mech=mech, truth=True))
         elif np.abs(grad).max() <= 1e-12:
             notes.append(f"quantity {i} is a constant, which says nothing")
+            if not studs[i - 1].free_symbols & set(state):  # no state in it at all: a constant exactly
+                admit.witness(Certificate(f"your quantity {i}", {}, "free of the coordinates and velocities"))
+            else:
+                admit.witness(None)
         else:
             good.append(i - 1)
     covered = 0
@@ -70,6 +80,11 @@ def check_conserved(ctx: Context, part: Part, value: object) -> PartResult:
             coef, *_ = np.linalg.lstsq(A, b, rcond=None)
             if np.abs(A @ coef - b).max() > 1e-7 * max(np.abs(b).max(), 1.0):
                 ok = False
+                admit.witness(outside_span(
+                    f"a minor of your quantities' gradients stacked with the gradient of conserved quantity "
+                    f"{j + 1} (zero if it were a function of yours)",
+                    [[sp.diff(studs[g], v) for v in state] for g in good], [sp.diff(refs[j], v) for v in state],
+                    s_grad[good, :, k], b, {s: v[k] for s, v in pts.values.items()}))
                 break
         covered += ok
     wrong = surplus(len(items) - len(good), len(items), len(refs), ctx)
@@ -113,6 +128,14 @@ def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:
     notes = []
     if not np.all(np.abs(res) <= 1e-8 * np.maximum(scale, 1e-300)):
         notes.append("it does not satisfy the equation of motion")
+        with np.errstate(all="ignore"):
+            rel = np.where(np.isfinite(res), np.abs(res) / np.maximum(scale, 1e-300), -1.0)
+        i, k = np.unravel_index(int(np.argmax(rel)), rel.shape)
+        along = {**{q: sol[n] for q, n in zip(mech.s.q, mech.names)},
+                 **{v: sp.diff(sol[n], T) for v, n in zip(mech.s.qd, mech.names)},
+                 **{a: sp.diff(sol[n], T, 2) for a, n in zip(mech.s.qdd, mech.names)}}
+        admit.witness(certify(f"the equation of motion for {mech.names[i]} along your q(t)",
+                              mech.EL[i].xreplace(along), {s: v[k] for s, v in pts.values.items()}))
     for key, text in part.initial.items():
         want = mech.parse(text, part.symbols)
         name = key[:-2] if key.endswith("_d") else key
@@ -123,6 +146,9 @@ def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:
         b = evaluate([want], args, argv)[0]
         if not np.allclose(a, b, rtol=1e-8, atol=1e-10):
             notes.append(f"it does not meet the initial condition for {name}{chr(39) if key != name else ''}(0)")
+            k = int(np.nanargmax(np.where(np.isfinite(a - b), np.abs(a - b), -1.0)))
+            admit.witness(certify(f"your {key}(0) minus the stated one", have.subs(T, 0) - want,
+                                  {s: v[k] for s, v in pts.values.items()}))
     if notes:
         if len(mech.names) > 1:
             try:

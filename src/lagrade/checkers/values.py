@@ -23,6 +23,7 @@ from lagrade.checkers.base import (
     result,
     surplus,
 )
+from lagrade.compare.certify import certify, root_between
 from lagrade.compare.symbolic import _OutOfTime, proves_zero, time_bound
 from lagrade.notation import YES_NO
 from lagrade.numeric import agree, compile_exprs, evaluate, scale_of
@@ -103,7 +104,24 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
             return False, "numeric", f"cannot be accepted without a proof: {admit.unproved(student)}"
         return True, "numeric", ""
     admit.proved(student)  # refuted: it earns nothing, so nothing about it is pending
+    certify_difference(mech, student, ref, a, b, pts)
     return False, "numeric", _describe_difference(a, b)
+
+
+def certify_difference(mech: Mechanics, student: sp.Expr, ref: sp.Expr, a: np.ndarray, b: np.ndarray,
+                       pts: Points, quantity: str = "your value minus the true one") -> bool:
+    """Certify, at the sampled state where they differ most, that ``student - ref`` is not zero
+    (`lagrade.compare.certify`); the certificate, or its absence, goes with the verdict."""
+    with np.errstate(all="ignore"):
+        gap = np.abs(np.asarray(a, dtype=complex) - np.asarray(b, dtype=complex)) / (np.abs(b) + np.abs(a) + 1e-300)
+    gap = np.where(np.isfinite(gap), gap, -1.0)
+    k = int(np.argmax(gap))
+    derived = {*mech.s.qdd, *mech.s.p, *mech.multipliers, *mech.constrained}
+    diff = student - ref
+    cert = certify(quantity, diff, {s: v[k] for s, v in pts.values.items()}, mech=mech,
+                   truth=bool(diff.free_symbols & derived)) if gap[k] >= 0 else None
+    admit.witness(cert)
+    return cert is not None
 
 
 def _describe_difference(a: np.ndarray, b: np.ndarray) -> str:
@@ -248,6 +266,17 @@ def check_expression_set(ctx: Context, part: Part, value: object) -> PartResult:
             matched += 1
             used.add(j)
     extra = len(studs) - len(used)
+    for r, R_r in zip(refs, R):
+        if not any(np.all(agree(S[j], R_r)) for j in used):  # unmatched: it differs from every value given
+            for j in range(len(studs)):
+                if j not in used:
+                    certify_difference(mech, studs[j], r, S[j], R_r, pts)
+            if len(used) == len(studs):
+                admit.witness(None)
+    for j in range(len(studs)):  # a value of yours that matches none: it differs from every true one
+        if j not in used:
+            for r, R_r in zip(refs, R):
+                certify_difference(mech, studs[j], r, S[j], R_r, pts)
     fraction = max(matched - surplus(extra, len(studs), len(refs), ctx), 0) / len(refs)
     if fraction >= 1.0:
         return graded(part, 1.0, "numeric", "correct.")
@@ -276,13 +305,22 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
         off = f(b + 0.05, *pts.args(others))[0]
         scale = scale_of(off)
         if not (np.all(np.abs(at_root) <= 1e-8 * scale) and np.any(np.abs(off) > 1e-6 * scale)):
+            if np.all(np.abs(at_root) <= 1e-8 * scale):  # an identity: it holds everywhere, certified or not
+                admit.witness(None)
+            else:
+                certify_difference(mech, expr.xreplace({x: ref}), sp.S.Zero, at_root, np.zeros_like(at_root), pts,
+                                   f"your equation at the true {part.unknown}")
             return graded(part, 0.0, "numeric", f"Incorrect: the true {part.unknown} does not satisfy your equation.")
         if part.domain is None and not _linear_in(expr, x, ctx.symbolic_seconds):
             return graded(part, 0.0, "numeric",
                           f"Incorrect: the true {part.unknown} satisfies your equation, but it is not linear in "
                           f"{part.unknown} (after clearing denominators), so it may have other solutions: write "
                           f"an equation that singles {part.unknown} out.")
-        if part.domain is not None and _another_root(f, b, pts.args(others), part.domain):
+        def second_root(k: int, lo: float, hi: float) -> None:
+            admit.witness(root_between(expr, x, lo, hi, {s: v[k] for s, v in pts.values.items()},
+                                       f"your equation, at the two ends of an interval away from the true {part.unknown}"))
+
+        if part.domain is not None and _another_root(f, b, pts.args(others), part.domain, certify_with=second_root):
             lo, hi = part.domain
             return graded(part, 0.0, "numeric",
                           f"Incorrect: the true {part.unknown} satisfies your equation, but so does another "
@@ -299,6 +337,7 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
         if proof:
             admit.proved(student)
         return graded(part, 1.0, "symbolic" if proof else "numeric", "correct.")
+    certify_difference(mech, student, ref, a, b, pts)
     if np.all(agree(a, np.degrees(b), rtol=1e-3)):
         return graded(part, 0.0, "numeric", "Incorrect: this looks like degrees; give the angle in radians.")
     return graded(part, 0.0, "numeric", f"Incorrect: {part.unknown} {_describe_difference(a, b)}.")
@@ -324,7 +363,7 @@ def _names_in(expr: sp.Basic) -> set[str]:
 
 
 def _another_root(f, root: np.ndarray, others: list[np.ndarray], domain: tuple[float, float],
-                  states: int = 8, steps: int = 4000) -> bool:
+                  states: int = 8, steps: int = 4000, certify_with=None) -> bool:
     """Does ``f(x, *others) = 0`` have a solution in the open ``domain`` other than ``root``, at
     any of the first sampled parameter sets? Found as sign changes on a fine grid, where |f| is
     small on one side (a pole changes sign too, with |f| large on both)."""
@@ -340,7 +379,10 @@ def _another_root(f, root: np.ndarray, others: list[np.ndarray], domain: tuple[f
         near = np.abs(values) <= 0.05 * typical
         change = (np.sign(values[:-1]) * np.sign(values[1:]) <= 0) & finite[:-1] & finite[1:] & (near[:-1] | near[1:])
         found = grid[:-1][change]
-        if np.any(np.abs(found - root[k]) > 3 * step):
+        far = found[np.abs(found - root[k]) > 3 * step]
+        if far.size:
+            if certify_with is not None:
+                certify_with(k, float(far[0]), float(far[0] + step))
             return True
     return False
 
