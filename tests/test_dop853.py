@@ -791,6 +791,53 @@ def test_a_singularity_is_refused_naming_the_trajectory():
     assert run.message.split(" at t")[0] == plain.message.split(" at t")[0]
 
 
+
+def test_a_rejected_trial_step_is_never_watched():
+    """The singularity guard (``watch``) sees only states of the motion: the start and accepted steps'
+    ends. Column 1 tries one oversized step (to the end, h = 10, on x'' = -x: rates of 521 at the trial's
+    end, where the motion's stay <= 1) that is rejected and retried shorter; column 0 accepts its step
+    at the same time and is watched."""
+    from lagrade.compare.dop853 import DOP853
+
+    seen = []
+    sol = DOP853(oscillators(np.ones(2)), 0.0, np.array([[1.0, 1.0], [0.0, 0.0]]), 10.0, 1e-10, 1e-10,
+                 watch=lambda t, f: seen.append((np.array(t, dtype=float), np.abs(f).max(axis=0))))
+    sol.h_abs[:] = [0.01, 50.0]
+    accepted = sol.step()
+    assert accepted.tolist() == [True, False]
+    t, size = seen[-1]
+    assert t.tolist() == [0.01, 0.0] and size.max() <= 1.0   # column 1: its current time and rates
+    while sol.active.any():
+        sol.advance(sol.step())
+    assert max(size.max() for _, size in seen) <= 1.0 + 1e-9   # |x|, |x'| <= 1 along the motion
+    assert np.allclose(sol.y, oscillator_exact(np.ones(2), [1, 1], [0, 0], [10.0])[..., 0], atol=1e-8)
+
+
+def test_an_oversized_trial_after_a_switch_does_not_stop_a_correct_run():
+    """A switching event restarts its trajectory with the step that held the root; on a branch 100 x
+    faster that step is far too long, and its rejected trial reached rates 1e9-fold the start's. Only
+    accepted steps may end a run as "approaches a singularity": this one decays, x = e^-t until x = 1/2,
+    then x = exp(-100 (t - ln 2)) / 2, and it is integrated to the end."""
+    rate = np.ones(2)
+
+    def rates(t, Y):
+        return -rate * Y
+
+    def faster(k, t, yk):
+        rate[k] = 100.0
+
+    ev = BatchedEvent("switch", lambda t, Y: Y[0] - 0.5, action="switch", direction=-1, on_event=faster)
+    tt = np.linspace(0.0, 2.0, 41)
+    run = integrate(rates, np.array([[1.0, 2.0]]), 2.0, replace(ACCURACY["default"], method="DOP853"),
+                    events=[ev], t_eval=tt)
+    assert run.ok, run.message
+    t_switch = np.log([2.0, 4.0])
+    assert np.allclose([t for _, t, _ in sorted(run.events["switch"], key=lambda e: e[0])], t_switch, rtol=1e-9)
+    exact = np.where(tt[None, :] < t_switch[:, None], np.array([[1.0], [2.0]]) * np.exp(-tt),
+                     0.5 * np.exp(-100.0 * (tt[None, :] - t_switch[:, None])))
+    assert np.allclose(run.y[0], exact, rtol=1e-7, atol=1e-8)   # atol 1e-10 of the integration
+
+
 def test_the_evaluation_budget_holds():
     """x'' = -k x for 50 s (about 25 periods) needs hundreds of evaluations; the budget is 100.
     (A falling ball is a polynomial DOP853 crosses in a few dozen: no budget to test there.)"""

@@ -162,7 +162,10 @@ class DOP853:
     t_k + c_s h_k. A column that has reached ``t_end`` or was stopped is still evaluated (``fun``
     always gets all K columns) but does not move (h_k = 0); it returns an ndarray. ``limit``: the
     most calls of ``fun`` allowed (`OverBudget` before any call beyond it). ``watch(t, f)``: called with
-    the rates at every step attempt's end (and at the start), e.g. to stop at a singularity.
+    the rates at the start and at the end of every step some column accepted (a column that did not
+    accept carries its current time and rates), e.g. to stop at a singularity. A rejected trial step
+    is never watched: its end is a state the motion does not visit (an oversized trial of a correct
+    motion can reach rates a millionfold too large), and the step is retried shorter.
     """
 
     def __init__(self, fun, t0: float, y0: np.ndarray, t_end: float, rtol: float, atol: float,
@@ -233,7 +236,6 @@ class DOP853:
         _dot(self.row_new, self.plan[N_STAGES][1], out=self.y_new_f)
         np.copyto(self.f_new, fun(self.t_new, self.y_new))  # fun may reuse its buffers
         self.nfev += N_STAGES
-        self.watch(self.t_new, self.f_new)
         np.multiply(self.f_new, h, out=Z[N_STAGES + 1])
         self.dense_ready = False
 
@@ -254,6 +256,8 @@ class DOP853:
         grow = np.where(self.rejected, np.minimum(grow, 1.0), grow)  # no growth right after a rejection
         self.h_abs = h * np.where(accepted, grow, np.fmax(factor, MIN_FACTOR))
         self.rejected = active & ~accepted
+        if accepted.any():  # only accepted ends are states of the motion (a rejected trial's is not)
+            self.watch(np.where(accepted, self.t_new, t), np.where(accepted, self.f_new, self.F0))
         return accepted
 
     def dense(self) -> np.ndarray:
