@@ -107,3 +107,55 @@ def test_decay_dominated_stiffness_falls_back_to_the_implicit_method():
     wrong = compare_runs(rewritten_rates(mech, P, sp.expand, {k: 1.01 * k}), reference_rates(mech, P), y0,
                          ["x", "x'"], 2.0, acc)
     assert not wrong.agree and wrong.rhs_evals < 2000
+
+
+def test_a_conservative_saddle_is_not_stiffness():
+    """Reason: eigenvalues in +-lambda pairs (a saddle of conservative motion, trace 0) must be followed at
+    the rate of the growing half by every method, so the decaying half is no stiffness; a decay with no
+    growth to match (dissipation) is, and a damped saddle keeps its dissipation."""
+    from lagrade.compare.trajectory import decay_beyond_growth
+
+    lam = np.array([[3.13, -3.13], [-1e4, -1.0], [-0.5 - np.sqrt(0.25 + 9.8), -0.5 + np.sqrt(0.25 + 9.8)],
+                    [2.0 + 5j, 2.0 - 5j], [-2.0 + 5j, -2.0 - 5j]])
+    assert decay_beyond_growth(lam) == pytest.approx([0.0, 1e4, 1.0, 0.0, 2.0])
+
+
+def _separatrix():
+    """12.43's pendulum released from rest at pi - 1e-3, next to its upright saddle (Jacobian eigenvalues
+    +-sqrt(g/l) there), over 50 periods; theta from the closed form sin(theta/2) = k cd(omega t | k^2)."""
+    from scipy.special import ellipj, ellipk
+
+    g, length, th0 = 9.8, 1.0, np.pi - 1e-3
+    m = np.sin(th0 / 2) ** 2
+    horizon = 50 * 4 * np.sqrt(length / g) * ellipk(m)
+    t = np.linspace(0.0, horizon, 201)
+    sn = ellipj(np.sqrt(g / length) * t + ellipk(m), m)[0]   # cd(u | m) = sn(u + K | m)
+    return mechanics("12.43"), params(mechanics("12.43"), 1, m=1.0, l=length, g=g), th0, t, 2 * np.arcsin(np.sqrt(m) * sn)
+
+
+@pytest.mark.timeout(60)
+def test_the_pendulum_near_its_separatrix_is_integrated_by_dop853(record_property):
+    """Reason: the saddle's real +-lambda once read as "stiff (fast decay)" and sent this conservative
+    motion to LSODA, 25 x less accurate than DOP853 at rtol 1e-12 (measured against the closed form).
+    The rule must keep DOP853 here, and the grader's run must be as accurate as scipy's DOP853 at the same
+    tolerance (within 10 x; they take the same steps, so it measures 1.0 x)."""
+    from dataclasses import replace
+
+    from scipy.integrate import solve_ivp
+
+    mech, P, th0, t, theta = _separatrix()
+    acc = replace(ACCURACY["strict"], max_rhs_evals=10**6)   # 50 periods need ~115 000 evaluations
+    y0 = np.array([[th0], [0.0]])
+    run = integrate(mech.lagrange_rates(P), y0, t[-1], acc, t_eval=t)
+    assert run.ok, run.message
+    ours = np.abs(run.y[0, 0] - theta).max()
+    ref = solve_ivp(lambda _, y: [y[1], -9.8 * np.sin(y[0])], (0.0, t[-1]), y0[:, 0], method="DOP853",
+                    rtol=acc.rtol, atol=acc.atol, t_eval=t)
+    scipys = np.abs(ref.y[0] - theta).max()
+    print(f"\nseparatrix pendulum, 50 periods, rtol 1e-12: grader ({run.method}) {ours:.3g} rad, scipy DOP853 "
+          f"{scipys:.3g} rad, ratio {ours / scipys:.2f}")
+    record_property("separatrix_error_ratio", float(ours / scipys))
+    assert ours <= 10 * scipys, f"{run.method} ({run.note}): {ours / scipys:.3g} x scipy's DOP853 error"
+    assert run.method == "DOP853" and not run.note, (run.method, run.note)
+    st = estimate_stiffness(mech.lagrange_rates(P), y0, t[-1], acc)
+    assert not st.stiff and st.damping < 1e-6 and st.growth == pytest.approx(np.sqrt(9.8), rel=1e-4)
