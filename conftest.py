@@ -44,7 +44,7 @@ SLOW = {
 
 
 #: Every test fails after pytest-timeout's default (``timeout`` in pyproject.toml, 180 s: the slowest
-#: tests of both tiers otherwise measured 4.3 s (fast tier) and 37 s (slow tier) on 2 cores shared at
+#: tests of both tiers otherwise measured 5.0 s (fast tier) and 37 s (slow tier) on 2 cores shared at
 #: load 6-7, docs/numerics.md); these take longer by design and get their own, about 4-6 x what they
 #: measured there (a module-scoped fixture's setup counts against the first test that uses it).
 TIMEOUTS = {
