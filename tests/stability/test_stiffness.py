@@ -138,7 +138,8 @@ def _separatrix():
     horizon = 50 * 4 * np.sqrt(length / g) * ellipk(m)
     t = np.linspace(0.0, horizon, 201)
     sn = ellipj(np.sqrt(g / length) * t + ellipk(m), m)[0]   # cd(u | m) = sn(u + K | m)
-    return mechanics("12.43"), params(mechanics("12.43"), 1, m=1.0, l=length, g=g), th0, t, 2 * np.arcsin(np.sqrt(m) * sn)
+    mech = mechanics("12.43")
+    return mech, params(mech, 1, m=1.0, l=length, g=g), th0, t, 2 * np.arcsin(np.sqrt(m) * sn)
 
 
 @pytest.mark.timeout(60)
