@@ -300,6 +300,9 @@ def _constructs(expr: sp.Expr, part: Part, mech) -> list[str]:
             stack.extend(a for a in e.args if isinstance(a, sp.Basic))
         elif name in FRICTION_SWITCHES and allowed_vars and _friction_switch(e, allowed_vars, mech, part):
             stack.extend(_switch_parts(e))
+        elif name in FRICTION_SWITCHES and e.free_symbols & {*mech.s.qd, *mech.s.p} and not allowed_vars:
+            notes.append(f"it uses {name} of a velocity: a velocity-dependent switch (dry friction) that this "
+                         "problem does not have")
         else:
             notes.append(_construct_words(e))
     return notes

@@ -26,7 +26,7 @@ from lagrade.checkers.base import (
     read_expr,
     read_sympy,
 )
-from lagrade.compare.certify import Certificate, certify, outside_span
+from lagrade.compare.certify import Certificate, certify, outside_span, sign_change, zero_at
 from lagrade.compare.equations import CompiledRows, analyse_rows
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs
@@ -222,9 +222,15 @@ def _cost(traj: Comparison) -> str:
 def _confirm(ctx: Context, prove: Callable[[], bool | None], trajectory: Callable[[], Comparison]):
     """Evidence beyond agreement at every sampled state: trajectories first (cheap, batched); a
     symbolic proof only where they do not settle it (chaos, a failed integration) or when asked
-    (``--accuracy strict``), because sympy's simplification can take far longer than everything else."""
+    (``--accuracy strict``), because sympy's simplification can take far longer than everything else.
+    An answer outside the analytic class (`admit`) is accepted on a proof alone, so its proof comes
+    first, and without one no motion is integrated (an undeclared friction switch would only run the
+    integrator to its budget)."""
+    if admit.pending():
+        proof = prove()
+        return (proof, _try(trajectory)) if proof else (proof, None)
     traj = _try(trajectory)
-    proof = prove() if ctx.prove_always or admit.pending() or traj is None or not traj.agree else None
+    proof = prove() if ctx.prove_always or traj is None or not traj.agree else None
     return proof, traj
 
 
@@ -600,7 +606,7 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     return _wrong(part, an.fraction, named or _sentence(problems), traj, ctx.credit)
 
 
-def _certify_rows(mech: Mechanics, rows: list[sp.Expr], an, compiled: CompiledRows, argv, truth: np.ndarray, pts,
+def _certify_rows(mech: Mechanics, rows: list[sp.Expr], an, compiled: CompiledRows, argv, rates: np.ndarray, pts,
                   what: str, **how) -> None:
     """Each wrong row, certified nonzero at the true rates where it is farthest from holding; a system
     with fewer equations than unknowns is short of them exactly; any other shortfall (a rank lost
@@ -609,15 +615,47 @@ def _certify_rows(mech: Mechanics, rows: list[sp.Expr], an, compiled: CompiledRo
         admit.witness(Certificate(f"{len(rows)} equations for {an.n} {what}", {}, "a count"))
         return
     if not an.wrong:
-        admit.witness(None)
+        admit.witness(_degenerate(mech, compiled, an, argv, rates, pts, what))
         return
     with np.errstate(all="ignore"):
-        g = np.abs(compiled.values(argv, truth))
+        g = np.abs(compiled.values(argv, rates))
     for i in an.wrong:
         row = np.where(np.isfinite(g[i]), g[i], -1.0)
         k = int(np.argmax(row))
         admit.witness(certify(f"your equation {i + 1} at the true {what}", rows[i],
                               {s: v[k] for s, v in pts.values.items()}, mech=mech, **how))
+
+
+def _degenerate(mech: Mechanics, compiled: CompiledRows, an, argv, rates: np.ndarray, pts, what: str):
+    """Equations that hold but do not determine the rates everywhere: their determinant in the rates,
+    against the reference's, changes sign between two sampled states (so vanishes between them), or is
+    exactly zero at a state of rest, or identically zero (proved)."""
+    if compiled.m != compiled.n or not compiled.linear:
+        return None
+    n = compiled.n
+    det = sp.Matrix(n, n, compiled.J_exprs).det(method="berkowitz")
+    reference = mech.mass.det(method="berkowitz") if what == "accelerations" else sp.S.One
+    product = det * reference
+    with np.errstate(all="ignore"):
+        values = np.real(evaluate([product], compiled.allargs, [*argv, *rates])[0])
+    at = [{s: v[k] for s, v in pts.values.items()} for k in range(pts.K)]
+    finite = np.isfinite(values)
+    if finite.any() and np.nanmax(values) > 0 > np.nanmin(values):
+        k1, k2 = int(np.nanargmax(values)), int(np.nanargmin(values))
+        cert = sign_change(f"the determinant of your equations in the {what} times the true one's", product,
+                           at[k1], at[k2])
+        if cert is not None:
+            return cert
+    rest = {**at[0], **{v: 0.0 for v in mech.s.qd}}
+    cert = zero_at(f"the determinant of your equations in the {what} at rest", det, rest)
+    if cert is not None:
+        return cert
+    if an.rank < an.n:
+        from lagrade.compare.symbolic import proves_zero
+
+        if proves_zero(det, 2.0):
+            return Certificate(f"the determinant of your equations in the {what}", {}, "identically 0 (proved)")
+    return None
 
 
 def _certify_lagrangian(mech: Mechanics, part: Part, L_s: sp.Expr, E_s: np.ndarray, E_r: np.ndarray, pts,

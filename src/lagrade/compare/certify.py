@@ -268,3 +268,38 @@ def outside_span(quantity: str, rows: list[list[sp.Expr]], target: list[sp.Expr]
     cols = sorted(pivots[:size])
     minor = sp.Matrix([[r[c] for c in cols] for r in [*rows, target]]).det(method="berkowitz")
     return certify(quantity, minor, values)
+
+
+def value_at(expr: sp.Expr, values: Mapping[sp.Symbol, float], *, mech=None, truth: bool = False):
+    """The arb ball of ``expr`` at the exact point, or None where it cannot be had."""
+    point = exact_point({s: v for s, v in values.items() if s in expr.free_symbols or truth})
+    try:
+        balls = Balls(point)
+        if truth:
+            with_truth(mech, balls)
+        return balls(sp.sympify(expr))
+    except (Uncertifiable, ArithmeticError, ValueError, TypeError):
+        return None
+
+
+def sign_change(quantity: str, expr: sp.Expr, first: Mapping[sp.Symbol, float],
+                second: Mapping[sp.Symbol, float]) -> Certificate | None:
+    """A certificate that ``expr`` (continuous on the convex sampled box) is provably positive at one
+    point and negative at the other, so zero somewhere on the segment between them."""
+    a, b = value_at(expr, first), value_at(expr, second)
+    if a is None or b is None or not (excludes_zero(a) and excludes_zero(b)) or (a > 0) == (b > 0):
+        return None
+    used = sorted(expr.free_symbols, key=str)
+    at = {str(s): f"{sp.Rational(Fraction(float(first[s])))} then {sp.Rational(Fraction(float(second[s])))}"
+          for s in used if s in first and s in second}
+    return Certificate(quantity, at, f"{a.str(8, radius=True)} at the first and {b.str(8, radius=True)} at the second")
+
+
+def zero_at(quantity: str, expr: sp.Expr, values: Mapping[sp.Symbol, float]) -> Certificate | None:
+    """A certificate that ``expr`` is exactly zero at an exact point (a ball of radius 0 at 0)."""
+    ball = value_at(expr, values)
+    if ball is None or not ball.is_zero():
+        return None
+    at = {str(s): str(sp.Rational(Fraction(float(values[s])))) for s in sorted(expr.free_symbols, key=str)
+          if s in values}
+    return Certificate(quantity, at, "exactly 0")
