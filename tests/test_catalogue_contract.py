@@ -106,6 +106,14 @@ SUPERSETS: dict[tuple[str, str], str] = {
 PART_SYSTEMS: dict[tuple[str, str], tuple[str, str]] = {
     ("P12.41b", "solution_b"): ("b_small", ("the catalogue's trajectory is the small-amplitude one, "
                                             "theta0*cos(sqrt(g/l)*t + delta): the linearized pendulum")),
+    # the other version of a two-version question (issue 33): the catalogue's results give it, the book asks it
+    ("X12.6", "L_b"): ("b", "(b) of the exercise: y as the independent coordinate"),
+    ("X12.6", "eom_b"): ("b", "(b) of the exercise: y as the independent coordinate"),
+    ("X12.6", "solution_b"): ("b", "(b) of the exercise: y as the independent coordinate"),
+    ("P12.5", "Q_a"): ("a", "(a) of the problem: the total length l a coordinate too"),
+    ("P12.6", "Q_a"): ("a", "(a) of the problem: the arc length s as coordinate"),
+    ("P12.6", "dW_a"): ("a", "(a) of the problem: the arc length s as coordinate"),
+    ("P12.40", "hamilton_fixed"): ("S", "the book's 'also in terms of r and theta': the fixed frame"),
 }
 
 #: words of the catalogue's `params` text that are not names
@@ -312,10 +320,13 @@ def name_problems(entry: Entry) -> list[str]:
         if not re.search(rf"(?<![\w]){re.escape(name)}(?![\w])", shown):
             found.append(f"part {name} is in force but `lagrade show` does not print it")
         if name in transcription(entry):
-            known = params | set(part.symbols) | {f.name for f in getattr(system, "functions", ())}
+            own = problem.system(part.system)  # a part graded on another system (PART_SYSTEMS) uses its names
+            known = params | set(part.symbols) | {f.name for f in getattr(system, "functions", ())} \
+                | {q.name for q in problem.parameters_of(own.key)} | {f.name for f in getattr(own, "functions", ())}
+            its = sorted(coords | {c.name for c in own.coordinates})
             for used in sorted(_names_in(transcription(entry)[name])):
-                if used not in known and used != "t" and not _state_name(used, sorted(coords)) \
-                        and not (used.startswith("delta_") and used[6:] in coords):
+                if used not in known and used != "t" and not _state_name(used, its) \
+                        and not (used.startswith("delta_") and used[6:] in its):
                     found.append(f"{name} uses {used}, which is not a name of part {part.name}")
     return found
 

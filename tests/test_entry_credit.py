@@ -85,7 +85,7 @@ def test_each_right_entry_of_a_dict_result_earns_its_share():
     m1, m2, S = sp.symbols("m1 m2 S", positive=True)
     alpha, beta = sp.symbols("alpha beta", positive=True)
     right = g * (m1 * sp.sin(alpha) - m2 * sp.sin(beta))
-    got = part(lagrade.check("12.5", Q_a={"l1": right, "l": S}), "Q")  # Q_a: an alias of Q (issue 21)
+    got = part(lagrade.check("12.5", Q_a={"l1": right, "l": S}), "Q_a")  # (a): l1 and l (issue 33)
     assert got.verdict == "partial" and got.score == got.max_score / 2, got.feedback
 
 

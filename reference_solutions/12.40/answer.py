@@ -15,6 +15,7 @@ t = symbols("t")
 m, k, omega = symbols("m k omega", positive=True)
 r, phip = Function("r")(t), Function("phip")(t)
 p_r, p_phip = Function("p_r")(t), Function("p_phip")(t)
+phi, p_phi = Function("phi")(t), Function("p_phi")(t)
 V = Function("V")
 
 hamilton = [
@@ -23,4 +24,10 @@ hamilton = [
     Eq(p_r.diff(t), p_phip**2 / (m * r**3) - V(r).diff(r)),
     Eq(p_phip.diff(t), 0),
 ]
-hamilton_p = hamilton
+# also in terms of r and phi (the fixed frame S): H = p_r**2/(2m) + p_phi**2/(2m r**2) + V(r)
+hamilton_fixed = [
+    Eq(r.diff(t), p_r / m),
+    Eq(phi.diff(t), p_phi / (m * r**2)),
+    Eq(p_r.diff(t), p_phi**2 / (m * r**3) - V(r).diff(r)),
+    Eq(p_phi.diff(t), 0),
+]

@@ -14,9 +14,9 @@ m1, m2, g, alpha, beta, S = symbols("m1 m2 g alpha beta S", positive=True)
 delta_l1, delta_l = symbols("delta_l1 delta_l")
 
 Qg = g * (m1 * sin(alpha) - m2 * sin(beta))
-Q_l_free = {"l1": Qg, "l": m2 * g * sin(beta) - S}   # (a), also accepted for Q (S or S_t for the tension)
+Q_a = {"l1": Qg, "l": m2 * g * sin(beta) - S}        # (a): l1 and l (S or S_t for the tension)
 dW_l_free = Qg * delta_l1 + (m2 * g * sin(beta) - S) * delta_l
-Q = {"l1": Qg}                                       # (b), the catalogue's: l1 alone
+Q_b = {"l1": Qg}                                     # (b), the catalogue's Q: l1 alone
 dW = Qg * delta_l1
 S_t = m1 * m2 * g * (sin(alpha) + sin(beta)) / (m1 + m2)
 equilibrium = m2 * sin(beta) / sin(alpha)   # the m1 that balances: m1 sin(alpha) = m2 sin(beta)

@@ -13,9 +13,9 @@ theta = Function("theta")(t)
 delta_s, delta_theta = symbols("delta_s delta_theta")
 
 F_t_s = -F_x * sin(s / R) + F_y * cos(s / R)          # tangential component, at theta = s/R
-Q_s = {"s": F_t_s}            # formulation (a), also accepted for Q (and bound as Q_a it is graded)
-dW_s = F_t_s * delta_s
+Q_a = {"s": F_t_s}            # (a): the arc length s (a force)
+dW_a = F_t_s * delta_s
 
 delta = {"x": -R * sin(theta) * delta_theta, "y": R * cos(theta) * delta_theta}
-dW = F_x * delta["x"] + F_y * delta["y"]   # formulation (b), the catalogue's: Q and dW in theta
-Q = {"theta": R * (-F_x * sin(theta) + F_y * cos(theta))}
+dW_b = F_x * delta["x"] + F_y * delta["y"]   # (b), the catalogue's Q and dW: theta (Q a torque)
+Q_b = {"theta": R * (-F_x * sin(theta) + F_y * cos(theta))}

@@ -19,13 +19,13 @@ theta, y = Function("theta")(t), Function("y")(t)
 
 I = M * R**2 / 2
 # (a), the catalogue's formulation: theta
-L = M / 2 * (R * theta.diff(t)) ** 2 + I / 2 * theta.diff(t) ** 2 - M * g * (l - R * theta) * sin(phi)
-eom = [Eq(Rational(3, 2) * M * R**2 * theta.diff(t, 2), M * g * R * sin(phi))]
-solution = {"theta": theta0 + w0 * t + g * sin(phi) * t**2 / (3 * R)}
+L_a = M / 2 * (R * theta.diff(t)) ** 2 + I / 2 * theta.diff(t) ** 2 - M * g * (l - R * theta) * sin(phi)
+eom_a = [Eq(Rational(3, 2) * M * R**2 * theta.diff(t, 2), M * g * R * sin(phi))]
+solution_a = {"theta": theta0 + w0 * t + g * sin(phi) * t**2 / (3 * R)}
 
-# (b), also accepted for L, eom and solution (bound as L_b, ... it is graded when L, ... are not given)
-L_y = M / 2 * y.diff(t) ** 2 + I / 2 * (y.diff(t) / R) ** 2 - M * g * (l - y) * sin(phi)
-eom_y = [Eq(y.diff(t, 2), 2 * g * sin(phi) / 3)]
-solution_y = {"y": y0 + v0 * t + g * sin(phi) * t**2 / 3}
+# (b), graded as its own parts
+L_b = M / 2 * y.diff(t) ** 2 + I / 2 * (y.diff(t) / R) ** 2 - M * g * (l - y) * sin(phi)
+eom_b = [Eq(y.diff(t, 2), 2 * g * sin(phi) / 3)]
+solution_b = {"y": y0 + v0 * t + g * sin(phi) * t**2 / 3}
 
 a = 2 * g * sin(phi) / 3

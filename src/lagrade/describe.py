@@ -36,7 +36,8 @@ def show_text(p: Problem) -> str:
     for part in p.parts:
         alias = f" (also {', '.join(part.aliases)})" if part.aliases else ""
         sys_note = f" [system {part.system}]" if part.system else ""
-        out.append(f"  {part.name:<12} {part.prompt or part.kind}{sys_note}{alias}")
+        extra = " [extra: not asked by the book; graded and shown, not counted in the total]" if part.extra else ""
+        out.append(f"  {part.name:<12} {part.prompt or part.kind}{sys_note}{alias}{extra}")
         detail = KINDS[part.kind].expects
         if part.kind == "expression" and isinstance(part.reference, dict):
             detail = f"dict with keys {', '.join(repr(k) for k in part.reference)}"
@@ -51,6 +52,10 @@ def show_text(p: Problem) -> str:
             detail += f"; also accepted: {'; '.join(others)}"
         if part.follows:
             detail += f"; judged for the formulation of your {part.follows}"
+        if part.version_of and part.version_of in (part.name, *part.aliases):
+            others = [v.name for v in p.versions(part.version_of) if v is not part]
+            detail += (f"; one version of {part.version_of}, with {', '.join(others)}: both are graded, and a value "
+                       f"bound to {part.version_of} counts for the version whose coordinates it uses")
         out.append(f"  {'':<12}   -> {detail}")
     return "\n".join(out)
 

@@ -198,8 +198,19 @@ def _ungradable(part, answer: LoadedAnswer) -> PartResult | None:
     if part.name not in answer.values:
         if answer.fatal is not None:
             return _unusable(part, "invalid", f"{NOT_GRADED}{answer.fatal}")
-        return _unusable(part, "missing", f"no value bound to '{part.name}'")
+        return _unusable(part, "missing", f"no value bound to '{part.name}'{_other_version(part, answer)}")
     return None
+
+
+def _other_version(part, answer: LoadedAnswer) -> str:
+    """For a missing version of a two-version question: where the shared name's value went instead."""
+    if part.version_of is None:
+        return ""
+    for graded_as, name in answer.routed.items():
+        if name == part.version_of and graded_as != part.name:
+            return (f" (your {name} is written in the other version's coordinates and is graded as {graded_as}; "
+                    f"the problem asks both versions)")
+    return ""
 
 
 class Formulations:
@@ -356,12 +367,21 @@ def check(problem: str | Path | Problem, answer: str | Path | None = None, *, pr
     unknown = [name for name in only or () if name not in {part.name for part in prob.parts}]
     if unknown:
         raise UnknownPartError(f"problem {prob.id} has no part {', '.join(unknown)}")
-    given = {}
+    given, routed = {}, {}
     for name, value in parts.items():
         try:
-            given[prob.part(name).name] = value
+            part_name = prob.part(name).name
         except KeyError:
             raise UnknownPartError(f"problem {prob.id} has no part '{name}'") from None
+        if not prob.versions(name):
+            given[part_name] = value
+    for name, value in parts.items():  # a two-version question's shared name: the version it is written in
+        if prob.versions(name):
+            from lagrade.reading.load import version_for
+
+            target = version_for(prob, name, value, taken=set(given))
+            if target is not None:
+                given[target], routed[target] = value, name
     finish = start_loading(path, prob, limits) if path is not None else LoadedAnswer
     try:  # meanwhile, on the other core: the engine and the references
         for module in ENGINE:
@@ -379,6 +399,7 @@ def check(problem: str | Path | Problem, answer: str | Path | None = None, *, pr
         raise
     loaded = finish()
     loaded.values.update(given)
+    loaded.routed.update(routed)
     if grading_seconds is None:
         grading_seconds = default_grading_seconds()
     try:

@@ -334,6 +334,13 @@ class Part(_Strict):
     follows: str | None = Field(
         None, description="an earlier part whose formulation this one is judged in: the alternative with the "
                           "system the student's answer to that part was right in (else the primary)")
+    version_of: Annotated[str, Field(pattern=IDENT)] | None = Field(
+        None, description="a question the book asks in two (or more) versions, each graded as its own part "
+                          "(ex12.6's L in theta and in y): the name they share. A value bound to that name is "
+                          "graded as the version whose system's coordinates it uses (else the version that "
+                          "has the name as name or alias); the other version is then missing")
+    extra: bool = Field(False, description="a part the book does not ask: graded and shown, but not counted in "
+                                           "the problem's total unless an assignment's `parts` names it")
 
     @model_validator(mode="after")
     def _reference_present(self) -> Part:
@@ -414,6 +421,11 @@ class Problem(_Strict):
                     raise ValueError(f"part '{part.name}': an alternative refers to unknown system '{alt.system}'")
                 if alt.system is not None and part.linearized and not self.system(alt.system).equilibrium:
                     raise ValueError(f"part '{part.name}' is linearized but system '{alt.system}' has no equilibrium")
+            versions = [p for p in self.parts if part.version_of is not None and p.version_of == part.version_of]
+            if part.version_of is not None and (len(versions) < 2 or len({p.system for p in versions}) < len(versions)
+                                                or sum(part.version_of in (p.name, *p.aliases) for p in versions) != 1):
+                raise ValueError(f"part '{part.name}': the versions of '{part.version_of}' must be two or more parts "
+                                 f"on distinct systems, exactly one of them named or aliased '{part.version_of}'")
             earlier = [p.name for p in self.parts[:self.parts.index(part)]]
             if part.follows is not None and part.follows not in earlier:
                 raise ValueError(f"part '{part.name}' follows '{part.follows}', which is not an earlier part")
@@ -437,7 +449,12 @@ class Problem(_Strict):
 
     @property
     def max_score(self) -> float:
-        return sum(p.weight for p in self.parts)
+        """The problem's total: its parts' weights, extras (parts the book does not ask) left out."""
+        return sum(p.weight for p in self.parts if not p.extra)
+
+    def versions(self, name: str) -> list[Part]:
+        """The parts that are versions of the two-version question ``name`` (empty if it is none)."""
+        return [p for p in self.parts if p.version_of == name]
 
 
 def _type_name(annotation: Any) -> str:

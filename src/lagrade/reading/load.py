@@ -41,6 +41,8 @@ class LoadedAnswer:
     status: str = "ok"
     #: what the answer printed (truncated)
     stdout: str = ""
+    #: versions of a two-version question answered by the shared name: part -> that name
+    routed: dict[str, str] = field(default_factory=dict)
 
 
 def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
@@ -117,16 +119,109 @@ def _finish_py(path: Path, problem: Problem, names: dict[str, str], outcome) -> 
 def _bind(out: LoadedAnswer, raw: dict, problems: list, path: Path, problem: Problem,
           names: dict[str, str]) -> LoadedAnswer:
     out.problems = problems
+    shared = {p.version_of for p in problem.parts if p.version_of is not None}
     for name, value in raw.items():
         if name in names:
             part = names[name]
-            if _is_own_symbol(value, name):
-                continue  # ``lam = symbols("lam")``: a multiplier named like the part, not an answer to it
-            out.values.setdefault(part, value)
+            if _is_own_symbol(value, name) or is_sympys_own(value, name):
+                continue  # ``lam = symbols("lam")``, sympy's ``Q``: not an answer to the part
+            if name not in shared:
+                out.values.setdefault(part, value)
         elif path.suffix == ".toml":
             out.problems.append(AnswerProblem(file=str(path), line=None,
                                               message=f"'{name}' is not a part of problem {problem.id}; ignored"))
+    # a two-version question's shared name answers the version it is written in, once the versions'
+    # own names are bound (those win)
+    for name, value in raw.items():
+        if name in shared and not _is_own_symbol(value, name) and not is_sympys_own(value, name):
+            target = version_for(problem, name, value, taken=set(out.values))
+            if target is not None:
+                out.values[target] = value
+                out.routed[target] = name
     return out
+
+
+def version_for(problem: Problem, name: str, value: object, taken: set[str] = frozenset()) -> str | None:
+    """The version of the two-version question ``name`` that ``value`` answers: the one whose system's
+    coordinates it uses (fewest coordinates of another version's, then fewest of its own left out),
+    else the version that has ``name`` as name or alias. None when that version is in ``taken`` (bound by
+    a name of its own, which wins): the value is not graded as another version it is not written in."""
+    versions = problem.versions(name)
+    coords = {p.name: {c.name for c in problem.system(p.system).coordinates} for p in versions}
+    every = set().union(*coords.values())
+    used = _coordinates_used(value, every)
+
+    def fit(part) -> tuple[int, int, bool]:
+        own = coords[part.name]
+        return len(used - own), len(own - used), name not in (part.name, *part.aliases)
+
+    best = min(versions, key=fit).name
+    return None if best in taken else best
+
+
+def _coordinates_used(value: object, coords: set[str]) -> set[str]:
+    """The coordinates a value is written in: a dict's coordinate keys, else its virtual displacements'
+    (delta_q), else every coordinate, momentum (p_q) or velocity it names."""
+    if isinstance(value, dict):
+        keys = {_base(_name_of(k)) for k in value} & coords
+        if keys:
+            return keys
+    names = {_name_of(n) for n in _names_in(value)}
+    deltas = {n[len("delta_"):] for n in names if n.startswith("delta_")} & coords
+    if deltas:
+        return deltas
+    return {_base(n) for n in names} & coords
+
+
+def _base(name: str) -> str:
+    if name.startswith("p_"):
+        name = name[2:]
+    for suffix in ("_dd", "_d"):
+        if name.endswith(suffix):
+            return name[: -len(suffix)]
+    return name
+
+
+def _name_of(thing: object) -> str:
+    if isinstance(thing, str):
+        return thing
+    func = getattr(thing, "func", None)
+    if getattr(thing, "is_Function", False) and func is not None:
+        return getattr(func, "__name__", "")
+    return str(getattr(thing, "name", ""))
+
+
+def _names_in(value: object) -> set:
+    """Symbols and applied undefined functions anywhere in a value (dicts, lists, sympy objects)."""
+    if isinstance(value, dict):
+        return set().union(set(value), *(_names_in(v) for v in value.values()))
+    if isinstance(value, (list, tuple, set)):
+        return set().union(*(_names_in(v) for v in value))
+    try:
+        from sympy import Basic
+        from sympy.core.function import AppliedUndef
+    except ImportError:  # pragma: no cover
+        return set()
+    if isinstance(value, Basic):
+        return set(value.free_symbols) | set(value.atoms(AppliedUndef))
+    return set()
+
+
+def is_sympys_own(value: object, name: str) -> bool:
+    """Whether ``value`` is the very object sympy exports under ``name`` (``Q``, the assumptions; ``N``,
+    a function), bound by ``from sympy import *``, not by the student: the part is unanswered."""
+    import sympy
+
+    own = getattr(sympy, name, None)
+    return own is not None and not isinstance(own, (int, float, str, bool)) and (
+        value is own or (type(value) is type(own) and _same_object(value, own)))
+
+
+def _same_object(value: object, own: object) -> bool:
+    try:
+        return bool(value == own) and type(own).__module__.startswith("sympy")
+    except Exception:  # noqa: BLE001 - an unusual value is simply not sympy's
+        return False
 
 
 def _is_own_symbol(value: object, name: str) -> bool:

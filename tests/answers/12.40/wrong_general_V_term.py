@@ -1,4 +1,4 @@
-# expect: hamilton=partial, hamilton_p=partial
+# expect: hamilton=partial, hamilton_fixed=missing
 # hamilton: -V(r) where -V'(r) belongs; hamilton_p: the force term left out (graded for the stated V = k r^2/2).
 from sympy import Eq, Function, symbols
 

@@ -1,4 +1,4 @@
-# expect: hamilton=partial, hamilton_p=partial
+# expect: hamilton=partial, hamilton_fixed=missing
 # The force term with the wrong sign: p_r' = ... + V'(r).
 from sympy import Eq, Function, symbols
 

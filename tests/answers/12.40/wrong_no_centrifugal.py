@@ -1,4 +1,4 @@
-# expect: hamilton_p=partial, hamilton=partial
+# expect: hamilton=partial, hamilton_fixed=partial
 # p_r' = -k r: the centrifugal term p_phi^2/(m r^3) (from the r-dependence of the rotational energy) dropped.
 from lagrade.answer import *
 

@@ -1,4 +1,4 @@
-# expect: hamilton_p=partial, hamilton=partial
+# expect: hamilton=partial, hamilton_fixed=partial
 # S' momentum taken as m r^2 phip' and a centrifugal force m omega^2 r added to p_r'; in S the omega carried over.
 from lagrade.answer import *
 

@@ -1,4 +1,4 @@
-# expect: Q=partial, dW=incorrect, S_t=correct, equilibrium=correct, neutral=correct
+# expect: Q_a=partial, Q_b=missing, dW=incorrect, S_t=correct, equilibrium=correct, neutral=correct
 # Formulation (a) in the catalogue's names with S_t: l2 = l - l1 overlooked in delta_l1, so gravity on m2
 # is counted with the wrong sign there.
 from lagrade.answer import *

@@ -1,4 +1,4 @@
-# expect: Q=incorrect, dW=incorrect, S_t=incorrect, equilibrium=incorrect, neutral=correct
+# expect: Q_a=incorrect, Q_b=incorrect, dW=incorrect, S_t=incorrect, equilibrium=incorrect, neutral=correct
 # Gravity resolved with cos instead of sin along the inclines (angles from the horizontal).
 from sympy import symbols, cos
 

@@ -1,7 +1,6 @@
-# expect: Q=partial, dW=incorrect, S_t=correct, equilibrium=correct, neutral=correct
+# expect: Q_a=partial, Q_b=missing, dW=incorrect, S_t=correct, equilibrium=correct, neutral=correct
 # (a) The tension's virtual work -S*delta_l forgotten when the string length is a coordinate. Only the (a)
-# names are bound: Q and dW are one part each, graded in the formulation the answer is right in, and a
-# second lettered name of the same part would not be graded (lagrade grades one value per part).
+# names are bound: Q_b, which the problem asks too, is missing.
 from sympy import symbols, sin
 
 m1, m2, g, alpha, beta = symbols("m1 m2 g alpha beta")

@@ -1,4 +1,4 @@
-# expect: Q=correct, dW=correct, S_t=incorrect, equilibrium=correct, neutral=incorrect
+# expect: Q_a=correct, Q_b=correct, dW=correct, S_t=incorrect, equilibrium=correct, neutral=incorrect
 # Tension taken as m1*g*sin(alpha) during the motion; and the equilibrium believed to fix one position l1.
 from sympy import symbols, sin
 

@@ -1,4 +1,4 @@
-# expect: Q=incorrect, dW=incorrect
+# expect: Q_a=incorrect, dW_a=incorrect, Q_b=missing, dW_b=missing
 # Catalogue names, arc length s: the factor R of the torque Q_theta kept although delta_s is a length.
 from lagrade.answer import *
 

@@ -1,4 +1,4 @@
-# expect: Q=incorrect, dW=incorrect, delta=correct
+# expect: Q_a=incorrect, dW_a=incorrect, Q_b=incorrect, dW_b=incorrect, delta=correct
 # The factors R swapped: Q_s given as a torque and Q_theta as a force.
 from sympy import symbols, sin, cos
 

@@ -1,4 +1,4 @@
-# expect: Q=incorrect, dW=incorrect, delta=incorrect
+# expect: Q_a=incorrect, dW_a=incorrect, Q_b=incorrect, dW_b=incorrect, delta=incorrect
 # The radial component of F used instead of the tangential one (displacements along the radius).
 from sympy import symbols, sin, cos
 

@@ -1,4 +1,4 @@
-# expect: Q=incorrect, dW=incorrect, delta=partial
+# expect: Q_a=incorrect, dW_a=incorrect, Q_b=incorrect, dW_b=incorrect, delta=partial
 # d(cos)/dtheta taken as +sin: the x-displacement and the F_x term have the wrong sign.
 from sympy import symbols, sin, cos
 

@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=incorrect, solution=incorrect
+# expect: L_b=incorrect, eom_b=incorrect, solution_b=incorrect, L_a=missing
 # Formulation b (y) as a sliding block: the rotational energy forgotten. Right in neither formulation; the
 # y answer cannot be read in theta, so its feedback is formulation b's (the named mistake for the block).
 from lagrade.answer import *

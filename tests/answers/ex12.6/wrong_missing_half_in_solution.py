@@ -1,4 +1,4 @@
-# expect: L=correct, eom=correct, solution=incorrect, a=correct
+# expect: L_a=correct, L_b=correct, eom_a=correct, eom_b=correct, solution_a=incorrect, solution_b=incorrect, a=correct
 # Integrating twice, the factor 1/2 of a*t^2/2 is lost: y = y0 + v0 t + (2 g sin(phi)/3) t^2.
 from sympy import Eq, Function, sin, symbols
 

@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=incorrect, solution=incorrect, a=incorrect
+# expect: L_a=incorrect, L_b=incorrect, eom_a=incorrect, eom_b=incorrect, solution_a=incorrect, solution_b=incorrect, a=incorrect
 # The disk treated as a sliding block: rotational kinetic energy M R^2 theta'^2/4 forgotten, acceleration g sin(phi).
 from sympy import Eq, Function, sin, symbols
 

@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=incorrect, solution=incorrect, a=incorrect
+# expect: L_a=incorrect, L_b=incorrect, eom_a=incorrect, eom_b=incorrect, solution_a=incorrect, solution_b=incorrect, a=incorrect
 # Moment of inertia of a ring (M R^2) used for the uniform disk: acceleration g sin(phi)/2 instead of 2 g sin(phi)/3.
 from sympy import Eq, Function, sin, symbols
 

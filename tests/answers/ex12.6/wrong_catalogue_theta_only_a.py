@@ -1,3 +1,4 @@
+# expect: L_a=correct, eom_a=correct, solution_a=correct, L_b=missing, eom_b=missing, solution_b=missing, a=correct
 # The catalogue's names and coordinate: theta only (formulation a).
 from lagrade.answer import *
 

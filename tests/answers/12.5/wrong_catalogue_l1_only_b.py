@@ -1,4 +1,6 @@
-# The catalogue's names with l1 as the only coordinate (b); the tension as the catalogue writes it.
+# expect: Q_a=missing, Q_b=correct, dW=correct, equilibrium=correct, neutral=correct
+# The catalogue's names with l1 as the only coordinate (b) only: Q is graded as Q_b, and (a), which the
+# problem asks too, is missing (half of the generalized force's credit). The tension as the catalogue writes it.
 from lagrade.answer import *
 
 m1, m2, g, alpha, beta, l = parameters("m1 m2 g alpha beta l")

@@ -1,3 +1,4 @@
+# expect: Q_a=missing, dW_a=missing, Q_b=correct, dW_b=correct, delta=correct
 # The catalogue's names with theta: Q = {"theta": R*F_t}, dW = R*F_t*delta_theta, F_t = -F_x sin(theta) + F_y cos(theta).
 from lagrade.answer import *
 
