@@ -651,3 +651,49 @@ def test_meaning_can_fail(tmp_path):
     path.write_text(answer_toml(answer))
     verdicts = {p.part: p.verdict for p in lagrade.check(entry.pid, path).parts}
     assert verdicts["L_c"] == "incorrect" and verdicts["eom_c"] == "correct"
+
+
+# --- a catalogue-complete answer is full marks on its problem (issue 33) ------------------------------
+
+#: Problems whose catalogue-complete answer still lacks parts the problem counts: each such part is either
+#: asked by the book (transcribe its value from the catalogue's results) or not (make it `extra = true`).
+#: Not yet classified against the chapter; the line goes when the problem scores full marks.
+NOT_YET_FULL: dict[str, str] = {pid: "issue 33: parts not yet classified against the chapter (book-asked: "
+                                     "transcribe; not asked: extra)" for pid in (
+    "12.10", "12.11", "12.13", "12.14", "12.18", "12.19", "12.2", "12.21", "12.22", "12.23", "12.25", "12.26",
+    "12.30", "12.31", "12.33", "12.34", "12.35", "12.37", "12.4", "12.42", "12.46", "12.48", "12.49", "12.50",
+    "12.6", "12.7", "12.9", "ex12.2", "ex12.4", "ex12.6", "ex12.7")}
+
+
+def catalogue_complete_answer(pid: str) -> dict:
+    """Everything the catalogue gives for problem ``pid``: every entry's answer (lettered ones merged)."""
+    answer: dict = {}
+    for entry in entries():
+        if entry.pid == pid:
+            answer.update(catalogue_answer(entry))
+    return answer
+
+
+PIDS = sorted({e.pid for e in entries()})
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("pid", [pytest.param(p, marks=pytest.mark.xfail(reason=NOT_YET_FULL[p], strict=True))
+                                 if p in NOT_YET_FULL else p for p in PIDS])
+def test_a_catalogue_complete_answer_is_full_marks(pid, tmp_path):
+    """The answer made of everything the catalogue gives scores the problem's whole total: every part the
+    problem counts is one the catalogue answers; parts the book does not ask are `extra` (not counted)."""
+    import lagrade
+
+    answer = catalogue_complete_answer(pid)
+    if not answer:
+        pytest.skip(f"{pid}: the catalogue gives no value to grade (NO_VALUE)")
+    path = tmp_path / "answer.toml"
+    path.write_text(answer_toml(answer))
+    result = lagrade.check(pid, path)
+    short = [f"{p.part}: {p.verdict}" for p in result.parts if not p.extra and p.verdict != "correct"]
+    assert result.full_marks and result.score == result.max_score, short
+
+
+def test_the_not_yet_full_table_names_real_problems():
+    assert set(NOT_YET_FULL) <= set(PIDS)

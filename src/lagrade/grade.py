@@ -186,8 +186,12 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
                 parts.append(_ungradable(part, answer) or used.grade(part, answer.values[part.name], read_as, memo))
     except GradingOutOfTime as exc:
         parts += [_ungradable(part, answer) or _unusable(part, "invalid", str(exc)) for part in asked[len(parts):]]
-    return CheckResult(problem=problem.id, score=round(sum(p.score for p in parts), 6),
-                       max_score=sum(p.max_score for p in parts), parts=parts,
+    extras = {part.name for part in asked if part.extra}
+    for graded_part in parts:
+        graded_part.extra = graded_part.part in extras
+    counted = [p for p in parts if not p.extra]  # the book's parts: extras are graded and shown, not counted
+    return CheckResult(problem=problem.id, score=round(sum(p.score for p in counted), 6),
+                       max_score=sum(p.max_score for p in counted), parts=parts,
                        problems=[str(p) for p in answer.problems])
 
 

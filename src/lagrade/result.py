@@ -30,6 +30,8 @@ class PartResult(BaseModel):
     read_as_text: str | None = Field(default=None, exclude=True, description="the same, for a terminal")
     review: str | None = Field(default=None, description="for instructors: why this verdict deserves a look (the "
                                                           "evidence could not decide it); never a reference value")
+    extra: bool = Field(default=False, description="a part the book does not ask: graded and shown, not counted "
+                                                   "in the problem's total (an assignment may count it)")
     certified: bool | None = Field(default=None, description="a rejection at sampled states: true when ball "
                                    "arithmetic proved the difference nonzero at an exact point (the certificate is "
                                    "the instructor's), false when it could not (then `review` says so); null otherwise")
@@ -58,7 +60,8 @@ class CheckResult(BaseModel):
 
     @property
     def full_marks(self) -> bool:
-        return all(p.verdict == "correct" for p in self.parts)
+        """Every part the problem counts is correct (an extra, which the book does not ask, may not be)."""
+        return all(p.verdict == "correct" for p in self.parts if not p.extra)
 
     def verdicts(self) -> dict[str, str]:
         return {p.part: p.verdict for p in self.parts}
@@ -90,8 +93,11 @@ def table(result: CheckResult) -> Table:
     t.add_column("feedback", overflow="fold")
     for p in result.parts:
         style = _STYLE[p.verdict]
-        t.add_row(p.part, f"[{style}]{p.verdict}[/]", f"{p.score:g}/{p.max_score:g}", p.method, p.feedback)
+        name = f"{p.part} (extra)" if p.extra else p.part
+        t.add_row(name, f"[{style}]{p.verdict}[/]", f"{p.score:g}/{p.max_score:g}", p.method, p.feedback)
     t.caption = f"total {result.score:g} / {result.max_score:g}"
+    if any(p.extra for p in result.parts):
+        t.caption += " (extra parts, not asked by the book, are not counted)"
     return t
 
 

@@ -35,7 +35,9 @@ output_format = "md"               # md | html | text
 
 A student's points on a problem are ``weight * sum(w_part * fraction_part) / sum(w_part)``, where
 ``fraction_part`` is the engine's score of the part over its maximum.  Weights only change the
-points, never the grading, so changing them does not regrade anything.
+points, never the grading, so changing them does not regrade anything.  A part marked extra (one the
+book does not ask; ``lagrade show`` says so) is graded and shown but has weight 0 unless ``parts``
+names it: ``parts = { H_F = 1 }`` asks for it.
 """
 
 from __future__ import annotations
@@ -190,6 +192,21 @@ def check_against_problems(assignment: Assignment, problems_dirs: tuple[Path, ..
         raise AssignmentError("\n".join(errors))
 
 
+def _extra(part) -> bool:
+    try:
+        return bool(part["extra"])
+    except (KeyError, IndexError):  # a gradebook from before the column: no part is extra
+        return False
+
+
+def part_weight(assigned: AssignedProblem, part) -> float:
+    """The weight of a stored part: the assignment's, else its own maximum; an extra part (one the book does
+    not ask) counts only when the assignment's ``parts`` names it."""
+    if part["part"] in assigned.parts:
+        return assigned.parts[part["part"]]
+    return 0.0 if _extra(part) else part["max_score"]
+
+
 def points(assigned: AssignedProblem, parts: list[dict], default_total: float) -> tuple[float, float]:
     """(points, points possible) of one problem from its stored parts (``part``, ``score``, ``max_score``).
 
@@ -202,7 +219,7 @@ def points(assigned: AssignedProblem, parts: list[dict], default_total: float) -
 
 
 def _weights(assigned: AssignedProblem, parts: list[dict]) -> list[float]:
-    return [assigned.parts.get(p["part"], p["max_score"]) for p in parts]
+    return [part_weight(assigned, p) for p in parts]
 
 
 def _frac(p: dict) -> float:

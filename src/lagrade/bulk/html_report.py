@@ -16,7 +16,7 @@ from collections import Counter
 from html import escape
 from pathlib import Path
 
-from lagrade.bulk.assignment import part_points
+from lagrade.bulk.assignment import part_points, part_weight
 from lagrade.bulk.exports import feedback_text, file_jail, overrides_of
 from lagrade.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
 from lagrade.bulk.summary import common_mistakes, common_wrong_answers, failure_counts, problem_stats, to_review
@@ -252,7 +252,7 @@ def _problem_section(book: Gradebook, g: ProblemGrade) -> str:
     if listed:
         out.append("<ul class=\"file-problems\">" + "".join(f"<li>{escape(p)}</li>" for p in listed) + "</ul>")
     ap = book.assignment.problem(g.problem)
-    weights = {p["part"]: ap.parts.get(p["part"], p["max_score"]) for p in g.parts}
+    weights = {p["part"]: part_weight(ap, p) for p in g.parts}
     total_w = sum(weights.values()) or 1.0
     out.append("<table class=\"parts\"><colgroup><col class=\"c-part\"><col class=\"c-verdict\">"
                "<col class=\"c-points\"><col class=\"c-answer\"><col class=\"c-feedback\"></colgroup>"
