@@ -117,9 +117,10 @@ def reference_texts(pid: str) -> list[tuple[str, str]]:
     problem = load_problem(pid)
     texts = []
     for system in problem.systems:
+        calls = {squash(f"{f.name}({','.join(f.args)})") for f in system.functions}
         for what in ("L", "T", "V"):
             raw = getattr(system, what)
-            if raw:
+            if raw and squash(raw).lstrip("-") not in calls:  # V = V(r): the general function, named by show
                 texts.append((f"{what} of system '{system.key}'", raw))
     for part in problem.parts:
         if part.kind in ("boolean", "integer", "names") or part.reference is None:

@@ -98,8 +98,9 @@ def test_text_reads_calls_and_derivatives_of_declared_functions_only():
 
 # --------------------------------------------------------------------------- grading
 
-def test_the_general_form_and_the_stated_one_are_both_right():
-    assert verdicts("12.39", H=H_ROT + V(r_), H_p=H_ROT + k * r_**2 / 2) == {"H": "correct", "H_p": "correct"}
+def test_the_general_form_is_right_and_the_stated_one_a_special_case():
+    """Issue 33: the stated V = k r^2/2 is a special case of the general V(r) the book asks: partial."""
+    assert verdicts("12.39", H=H_ROT + V(r_), H_p=H_ROT + k * r_**2 / 2) == {"H": "correct", "H_p": "partial"}
 
 
 @pytest.mark.parametrize("potential", [-V(r_), 2 * V(r_), V(r_) + k * r_**2 / 2, V(r_)**2, sp.Derivative(V(r_), r_)])
@@ -129,10 +130,10 @@ def test_hamilton_equations_with_the_general_force():
                 sp.Eq(pr.diff(t), pp**2 / (m * r**3) + force), sp.Eq(pp.diff(t), 0)]
 
     assert verdicts("12.40", hamilton=eqs(-V(r).diff(r)))["hamilton"] == "correct"
-    assert verdicts("12.40", hamilton=eqs(-k * r))["hamilton"] == "correct"
+    assert verdicts("12.40", hamilton=eqs(-k * r))["hamilton"] == "partial"  # the stated V: a special case
     assert verdicts("12.40", hamilton=eqs(V(r).diff(r)))["hamilton"] == "partial"
     assert verdicts("12.40", hamilton=eqs(-V(r)))["hamilton"] == "partial"
-    assert verdicts("12.40", hamilton=eqs(0))["hamilton"] == "partial"  # read with the stated V: missing -k*r
+    assert verdicts("12.40", hamilton=eqs(0))["hamilton"] == "partial"  # right for V = 0: a special case
 
 
 def test_an_unknown_bare_name_of_a_function_says_how_to_write_it():
@@ -216,3 +217,51 @@ def test_the_substitute_scenes_are_the_books_physics():
     H = p_r * sol[rd] + p_phip * sol[phipd] - L.subs(sol)
     plain = {s: sp.Symbol(s.name) for s in H.free_symbols}
     assert sp.simplify(mech.hamiltonian_symbolic - H.xreplace(plain)) == 0
+
+
+# --- special cases of a general function (issue 33) -------------------------------------------------
+
+def _special_cases():
+    """(problem, part, answer, the case it is right for) on the four ids with a general function: each
+    answer is derived here from the chapter's set-up with the function replaced by the special case."""
+    xp, yp = sp.Function("xp")(t), sp.Function("yp")(t)
+    x, p_x = sp.Function("x")(t), sp.Function("p_x")(t)
+    w, kk = sp.symbols("omega k")
+    U = sp.Function("U")
+
+    def L_rotating(potential):  # 12.26: a particle in the frame rotating at omega, T from the fixed frame's
+        X = xp * sp.cos(w * t) - yp * sp.sin(w * t)
+        Y = xp * sp.sin(w * t) + yp * sp.cos(w * t)
+        return sp.expand(m * (X.diff(t) ** 2 + Y.diff(t) ** 2) / 2) - potential
+
+    H_line = p_x**2 / (2 * m)  # 12.36: V = 0
+    return [
+        ("12.26", "L", L_rotating(0), "U = 0"),
+        ("12.26", "L", L_rotating(kk * (xp**2 + yp**2) / 2), "U = k*(xp**2 + yp**2)/2"),
+        ("12.36", "H", H_line, "V = 0"),
+        ("12.39", "H_p", H_ROT + k * r_**2 / 2, "V = k*r**2/2"),
+        ("12.39", "H_p", H_ROT, "V = 0"),
+    ], [("12.26", "L", L_rotating(U(xp, yp))), ("12.36", "H", H_line + sp.Function("V")(x)),
+        ("12.39", "H_p", H_ROT + V(r_))]
+
+
+SPECIAL, GENERAL = _special_cases()
+
+
+@pytest.mark.parametrize("pid, part, value, case", SPECIAL, ids=[f"{p}-{n}-{c}" for p, n, _, c in SPECIAL])
+def test_a_special_case_is_partial_with_a_note(pid, part, value, case):
+    graded = {p.part: p for p in check(pid, grading_seconds=math.inf, **{part: value}).parts}[part]
+    assert graded.verdict == "partial" and 0 < graded.score < graded.max_score, graded.feedback
+    assert f"Right for {case}" in graded.feedback and "asks for a general" in graded.feedback
+
+
+@pytest.mark.parametrize("pid, part, value", GENERAL, ids=[f"{p}-{n}" for p, n, _ in GENERAL])
+def test_the_same_answer_with_the_general_function_is_right(pid, part, value):
+    """The guard of the test above: the special cases come from a right general answer."""
+    graded = {p.part: p for p in check(pid, grading_seconds=math.inf, **{part: value}).parts}[part]
+    assert graded.verdict == "correct", graded.feedback
+
+
+def test_an_answer_the_function_does_not_enter_is_right_without_it():
+    """12.39's H' - H = -omega p_phip has no V in it: not a special case, full credit."""
+    assert verdicts("12.39", H_diff=-omega * sp.Symbol("p_phip"))["H_diff"] == "correct"

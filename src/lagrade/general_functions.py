@@ -20,6 +20,9 @@ from lagrade.spec import GeneralFunction, System
 
 #: random functions an answer using a general function is graded with (each a full check)
 INSTANCES = 3
+#: the instance that puts 0 for every general function (the free particle of U = 0, V = 0): a special
+#: case an answer may be right for (`lagrade.checkers.general`)
+ZERO = -1
 
 
 def arities(system: System) -> dict[str, int]:
@@ -32,6 +35,8 @@ def random_function(f: GeneralFunction, instance: int) -> sp.Lambda:
     product, an exponential and a sine term, so that no sign, factor or missing derivative of the
     answer cancels by accident. Seeded by name and instance: every process draws the same ones (the
     reference cache on disk relies on it)."""
+    if instance == ZERO:
+        return sp.Lambda(tuple(sp.Symbol(a) for a in f.args), sp.Integer(0))
     rng = random.Random(f"lagrade general function {f.name} #{instance}")
 
     def coef(lo: int, hi: int, den: int = 8) -> sp.Rational:

@@ -1,4 +1,4 @@
-# expect: H=correct, H_p=incorrect, H_diff=incorrect, H_conserved=correct, H_is_E=correct, Hp_conserved=correct, Hp_is_E=incorrect
+# expect: H=partial, H_p=incorrect, H_diff=incorrect, H_conserved=correct, H_is_E=correct, Hp_conserved=correct, Hp_is_E=incorrect
 # H' taken to be the energy again (the same function of the momenta as H): the -omega p_phip term is missing.
 from lagrade.answer import *
 

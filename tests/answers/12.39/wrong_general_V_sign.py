@@ -1,4 +1,4 @@
-# expect: H=incorrect, H_p=incorrect, H_diff=correct
+# expect: H=incorrect, H_p=partial, H_diff=correct
 # -V(r) where +V(r) belongs (H = T - V) in H, and the V term left out of H_p (graded for the stated V = k r^2/2).
 from sympy import Function, symbols
 

@@ -1,4 +1,4 @@
-# expect: H=correct, H_p=incorrect, H_diff=incorrect, Hp_conserved=incorrect
+# expect: H=partial, H_p=incorrect, H_diff=incorrect, Hp_conserved=incorrect
 # The momentum in S' taken as m r^2 phip' (relative angular velocity), giving H' = T_rel - m w^2 r^2/2 + V;
 # and H' declared not conserved "because the frame rotates".
 from lagrade.answer import *

@@ -1,4 +1,4 @@
-# expect: H=correct, H_p=incorrect, H_diff=incorrect
+# expect: H=partial, H_p=incorrect, H_diff=incorrect
 # Sign of the rotation term flipped: H' = H + omega p_phi.
 from lagrade.answer import *
 

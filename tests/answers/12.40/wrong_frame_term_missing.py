@@ -1,4 +1,4 @@
-# expect: hamilton=partial, hamilton_fixed=correct
+# expect: hamilton=partial, hamilton_fixed=partial
 # The fixed-frame equations copied into S': phip' = p_phip/(m r^2), the -omega from the rotation forgotten.
 from lagrade.answer import *
 

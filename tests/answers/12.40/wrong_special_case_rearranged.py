@@ -1,3 +1,5 @@
+# expect: hamilton=partial, hamilton_fixed=partial
+# A special case of the general function where the problem asks the general one (issue 33): hamilton, hamilton_fixed earn partial credit.
 # Equivalent forms: rows multiplied out, written as expressions = 0, reordered; phip' + omega grouped.
 from lagrade.answer import *
 

@@ -1,3 +1,5 @@
+# expect: H=partial, H_p=partial, H_diff=correct, H_conserved=correct, H_is_E=correct, Hp_conserved=correct, Hp_is_E=correct
+# A special case of the general function where the problem asks the general one (issue 33): H, H_p earn partial credit.
 # Equivalent forms: H' with the square completed (kinetic energy relative to S' plus the centrifugal potential),
 # H' - H written in the velocities of S', booleans as sympy true/false, H under its alias H_fixed.
 from lagrade.answer import *

@@ -1,3 +1,5 @@
+# expect: H=partial, H_p=partial, H_diff=correct, H_conserved=correct, H_is_E=correct, Hp_conserved=correct, Hp_is_E=correct
+# A special case of the general function where the problem asks the general one (issue 33): H, H_p earn partial credit.
 # Momenta as plain symbols everywhere (allowed in H and in results), H' - H in the momentum of S'.
 from sympy import Rational, symbols
 

@@ -1,4 +1,5 @@
-# expect: H_conserved=correct, Hp_is_E=correct
+# expect: H=partial, H_p=partial, H_diff=correct, H_conserved=correct, H_is_E=correct, Hp_conserved=correct, Hp_is_E=correct
+# A special case of the general function where the problem asks the general one (issue 33): H, H_p earn partial credit.
 # The other parts as in the reference solution; the form under test is bound last.
 from sympy import Function, symbols
 

@@ -1,3 +1,5 @@
+# expect: L=partial, eom=partial, coriolis=correct, centrifugal=correct
+# A special case of the general function where the problem asks the general one (issue 33): L, eom earn partial credit.
 # L expanded (T_rel + m*omega*(xp*yp' - yp*xp') + centrifugal term) plus d/dt(m*omega*xp*yp);
 # eom divided by m and moved to one side, in the other order.
 from lagrade.answer import *
