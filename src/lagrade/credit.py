@@ -9,7 +9,7 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 
 class Credit(BaseModel):
@@ -30,4 +30,11 @@ class Credit(BaseModel):
 def load_credit(path: Path) -> Credit:
     """A ``[credit]`` table (or a bare table) from a TOML file."""
     data = tomllib.loads(path.read_text(encoding="utf-8"))
-    return Credit.model_validate(data.get("credit", data))
+    try:
+        return Credit.model_validate(data.get("credit", data))
+    except ValidationError as exc:  # one line, not pydantic's dump: the first error, and how many more
+        err = exc.errors()[0]
+        where = ".".join(str(p) for p in err["loc"]) or "[credit]"
+        more = f" (and {len(exc.errors()) - 1} more)" if len(exc.errors()) > 1 else ""
+        known = ", ".join(Credit.model_fields)
+        raise ValueError(f"[credit] {where}: {err['msg']}{more}; the settings are {known}") from None

@@ -26,6 +26,10 @@ def list_cmd(as_json: bool, problems_dir: tuple[Path, ...]) -> None:
                          "names": [part.name for part in p.parts]})
         except SpecError as exc:
             rows.append({"id": pid, "title": f"(broken problem file: {exc})", "parts": 0, "names": []})
+    if not rows:  # a student's client, or a course's folder not found: say so, not nothing
+        from lagrade.library import NO_DATA
+
+        click.echo(f"lagrade: {NO_DATA}", err=True)
     if as_json:
         click.echo(json.dumps(rows, indent=1))
         return

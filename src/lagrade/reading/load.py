@@ -85,8 +85,10 @@ def _load_toml(path: Path, problem: Problem, names: dict[str, str]) -> LoadedAns
                 out.part_problems[names[name]] = prob
     if any(prob.line is None for prob in problems):
         out.fatal = next(prob for prob in problems if prob.line is None)
-    if not raw and problems and not out.part_problems:  # not TOML at all: nothing in it can be graded
-        out.fatal, out.status = problems[0], "error"
+    syntax = next((prob for prob in problems if "not valid TOML" in prob.message), None)
+    if syntax is not None or (not raw and problems and not out.part_problems):  # not TOML at all: nothing in it
+        out.fatal, out.status = syntax or problems[0], "error"                  # can be graded (exit 2, as .py)
+        out.part_problems.clear()
     return _bind(out, raw, problems, path, problem, names)
 
 
@@ -118,6 +120,67 @@ def _finish_py(path: Path, problem: Problem, names: dict[str, str], outcome) -> 
 
 def _bind(out: LoadedAnswer, raw: dict, problems: list, path: Path, problem: Problem,
           names: dict[str, str]) -> LoadedAnswer:
+    _bind_values(out, raw, problems, path, problem, names)
+    if not out.values and not out.part_problems and out.fatal is None:  # said once, for every name it binds
+        out.problems = [p for p in out.problems if not p.message.endswith("; ignored")]
+        out.problems.append(AnswerProblem(file=str(path), line=None, message=no_expected_name(path, problem)))
+    return out
+
+
+#: what students write for the answer names (a "did you mean" beyond spelling)
+USUAL_WORDS = {"lagrangian": "L", "lagrange": "L", "hamiltonian": "H", "equations": "eom", "equation": "eom",
+               "equations_of_motion": "eom", "motion": "eom", "eqs": "eom", "hamilton_equations": "hamilton",
+               "hamiltons_equations": "hamilton", "hamilton_eqs": "hamilton", "generalized_force": "Q",
+               "force": "Q", "forces": "Q", "tension": "S_t", "period": "period", "frequency": "omega",
+               "virtual_work": "dW", "acceleration": "a", "conserved_quantities": "conserved",
+               "constants_of_motion": "conserved", "trajectory": "solution", "degrees_of_freedom": "dof"}
+
+
+def no_expected_name(path: Path, problem: Problem) -> str:
+    """The one line for an answer that binds no name of the problem: which names it should bind, and the
+    closest of them to each name it does bind ("did you mean 'L' for 'Lagrangian'?")."""
+    import difflib
+
+    expected = list(answer_names(problem))
+    hints = []
+    for name in bound_names(path):
+        guess = USUAL_WORDS.get(name.lower())
+        if guess not in expected:
+            close = difflib.get_close_matches(name, expected, n=1, cutoff=0.6) or \
+                difflib.get_close_matches(name.lower(), [n.lower() for n in expected], n=1, cutoff=0.6)
+            guess = next((n for n in expected if close and n.lower() == close[0].lower()), None)
+        if guess is not None:
+            hints.append(f"'{guess}' for '{name}'")
+    mean = f" (did you mean {', '.join(hints)}?)" if hints else ""
+    parts = ", ".join(p.name for p in problem.parts)
+    return f"no expected name found: problem {problem.id} asks {parts}{mean}"
+
+
+def bound_names(path: Path) -> list[str]:
+    """The names a file binds at its top level, read without running it (``ast`` for .py, TOML keys)."""
+    import ast
+    import tomllib
+
+    try:
+        text = path.read_text(encoding="utf-8", errors="replace")
+        if path.suffix == ".toml":
+            return list(tomllib.loads(text))
+        tree = ast.parse(text)
+    except (OSError, ValueError, SyntaxError):
+        return []
+    out: list[str] = []
+    for node in tree.body:
+        targets = node.targets if isinstance(node, ast.Assign) else [node.target] if isinstance(
+            node, (ast.AnnAssign, ast.AugAssign)) else []
+        for target in targets:
+            for leaf in ast.walk(target):
+                if isinstance(leaf, ast.Name) and leaf.id not in out:
+                    out.append(leaf.id)
+    return out
+
+
+def _bind_values(out: LoadedAnswer, raw: dict, problems: list, path: Path, problem: Problem,
+                 names: dict[str, str]) -> LoadedAnswer:
     out.problems = problems
     shared = {p.version_of for p in problem.parts if p.version_of is not None}
     for name, value in raw.items():
