@@ -6,7 +6,8 @@ reference_solutions tests/answers`` collects, in whatever folders it is given (a
 - every problem file (a TOML file with an ``id`` and ``[[parts]]``): it loads, and its scene derives;
 - every reference solution ``<id>/answer.(py|toml)``: it scores full marks;
 - every golden answer ``<id>/<expected>_<what>.(py|toml)``: ``correct_*`` scores full marks,
-  ``wrong_*`` does not, and a first-line comment ``# expect: L=incorrect, eom=correct`` pins verdicts.
+  ``wrong_*`` does not or gets an extra part (one the book does not ask, not counted) wrong, and a
+  first-line comment ``# expect: L=incorrect, eom=correct`` pins verdicts.
 
 ``<id>`` is the folder's name, and it must be a problem that can be found: among the problem files
 under the paths pytest was given, in the nearest ``problems/`` folder above the answer, in
@@ -160,7 +161,8 @@ class AnswerItem(pytest.Item):
         complaints = []
         if full and not result.full_marks:
             complaints.append(f"expected full marks, got {result.score:g} / {result.max_score:g}")
-        if not full and result.full_marks:
+        wrong_extra = any(p.extra and p.verdict not in ("correct", "missing") for p in result.parts)
+        if not full and result.full_marks and not wrong_extra:
             complaints.append("expected a lost mark (this answer is wrong), but it scored full marks")
         got = result.verdicts()
         for part, verdict in verdicts.items():

@@ -1,4 +1,5 @@
 # expect: eom=incorrect, period=correct
+# eom: extra (the book does not ask it): wrong here: shown, not counted in the score (issue 33), still a wrong answer.
 # Sign slip in the equation (the support's acceleration entering as g - a) while the period is quoted correctly.
 from lagrade.answer import *
 

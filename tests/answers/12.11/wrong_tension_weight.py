@@ -1,4 +1,5 @@
 # expect: L=correct, eom=correct, a=correct, a_table=correct, S_t=incorrect
+# S_t: extra (the book does not ask it): wrong here: shown, not counted in the score (issue 33), still a wrong answer.
 # Tension taken equal to the hanging weight m*g (true only at rest).
 from lagrade.answer import *
 

@@ -1,4 +1,5 @@
 # expect: eom_exact=partial, L=correct, eom=correct, omega=correct
+# eom_exact: extra (the book does not ask it): wrong here: shown, not counted in the score (issue 33), still a wrong answer.
 # In the exact theta2 equation the centrifugal term has the wrong sign (+l1*theta1'**2*sin(theta1 - theta2) on the left).
 from lagrade.answer import *
 

@@ -1,4 +1,5 @@
 # expect: L=correct, eom=correct, a=correct, lam=incorrect
+# lam: extra (the book does not ask it): wrong here: shown, not counted in the score (issue 33), still a wrong answer.
 # Friction taken along F: the sign of the multiplier is wrong.
 from lagrade.answer import *
 

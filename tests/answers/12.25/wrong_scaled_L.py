@@ -1,4 +1,5 @@
 # expect: L=partial, a=correct
+# L: extra (the book does not ask it): wrong here: shown, not counted in the score (issue 33), still a wrong answer.
 # L multiplied by 2 (T written without the 1/2's): right equations, wrong normalization.
 from lagrade.answer import *
 

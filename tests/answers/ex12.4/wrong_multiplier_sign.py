@@ -1,4 +1,5 @@
 # expect: a=correct, S_t=correct, lam=incorrect
+# lam: extra (the book does not ask it): wrong here: shown, not counted in the score (issue 33), still a wrong answer.
 # Multipliers given as the tensions themselves (positive): wrong sign for the published convention lam = m y'' - m g.
 from sympy import symbols
 

@@ -1,5 +1,5 @@
 # expect: L=incorrect, eom=partial, omega=correct, equilibrium=correct
-# L and eom are extras (the book asks only omega): wrong, shown, not counted (issue 33).
+# L and eom are extras (the book asks only omega): wrong, shown, not counted in the score (issue 33).
 # Forgot that rho = z*tan(alpha) changes with z: T has z'**2 instead of z'**2/cos(alpha)**2
 # (the phi equation survives; the circle condition does not depend on it).
 from lagrade.answer import *

@@ -1,5 +1,5 @@
 # expect: H=correct, hamilton=correct, H_conserved=incorrect, H_is_E=incorrect
-# H_conserved and H_is_E are extras (the book does not ask them): wrong, shown, not counted (issue 33).
+# H_conserved and H_is_E are extras (the book does not ask them): wrong, shown, not counted in the score (issue 33).
 # The ground-frame H (explicitly time dependent, and E + a0*t*p_x) with the elevator frame's answers to the
 # two questions: they are judged for the student's own H.
 from lagrade.answer import *
