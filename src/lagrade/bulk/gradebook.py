@@ -79,10 +79,12 @@ def load_gradebook(db: Path | str) -> Gradebook:
             raise StoreError(f"{db}: nothing graded yet (run 'lagrade grade' first)")
         assignment = parse_assignment(json.loads(raw), str(db))
         totals = json.loads(store.meta("problem_totals") or "{}")
+        extras = json.loads(store.meta("problem_extras") or "{}")  # a gradebook from before: none
         subs = {(r["student"], r["problem"]): r for r in store.submissions()}
         parts: dict[tuple[str, str], list[dict]] = {}
         for r in store.parts():
-            parts.setdefault((r["student"], r["problem"]), []).append(dict(r))
+            parts.setdefault((r["student"], r["problem"]), []).append(
+                {**dict(r), "extra": r["part"] in extras.get(r["problem"], ())})
         names = sorted(set(store.students()) | {s for s, _ in subs})
         students = []
         for name in names:

@@ -63,6 +63,7 @@ class Plan:
     parts: dict[str, list[tuple[str, float]]]  # problem id -> [(part, weight)]
     keys: dict[str, str]                       # problem id -> grading hash
     version: str
+    extras: dict[str, list[str]] = field(default_factory=dict)  # problem id -> its extra parts (not asked)
 
     def key(self, sub: Submission) -> Key:
         return Key(sub.sha256, self.keys[sub.problem], self.version)
@@ -79,13 +80,15 @@ def plan(root: Path, assignment: Assignment, problems_dirs: tuple[Path, ...] = (
     from lagrade.library import load_problem, problem_path
 
     check_against_problems(assignment, problems_dirs)
-    sources, parts, keys = {}, {}, {}
+    sources, parts, keys, extras = {}, {}, {}, {}
     for pid in assignment.ids:
         path = problem_path(pid, problems_dirs)
         sources[pid] = path.read_text(encoding="utf-8")
-        parts[pid] = [(p.name, p.weight) for p in load_problem(pid, problems_dirs).parts]
+        problem = load_problem(pid, problems_dirs)
+        parts[pid] = [(p.name, p.weight) for p in problem.parts]
+        extras[pid] = [p.name for p in problem.parts if p.extra]
         keys[pid] = assignment.grading_hash(pid, sources[pid])
-    return Plan(assignment, scan(root, assignment.ids), sources, parts, keys, version or grader_version())
+    return Plan(assignment, scan(root, assignment.ids), sources, parts, keys, version or grader_version(), extras)
 
 
 def _text_answers_last(sub: Submission) -> bool:
@@ -99,7 +102,9 @@ def _text_answers_last(sub: Submission) -> bool:
 
 
 def problem_totals(p: Plan) -> dict[str, float]:
-    return {pid: float(sum(w for _, w in parts)) for pid, parts in p.parts.items()}
+    """Each problem's own total: its parts' weights, extras (parts the book does not ask) left out."""
+    return {pid: float(sum(w for name, w in parts if name not in p.extras.get(pid, ())))
+            for pid, parts in p.parts.items()}
 
 
 def grade_folder(root: Path, assignment: Assignment, db: Path, *, workers: int | None = None,
@@ -113,6 +118,7 @@ def grade_folder(root: Path, assignment: Assignment, db: Path, *, workers: int |
     with Store(db, lock=True) as store:
         store.set_meta("assignment", assignment.canonical_json())
         store.set_meta("problem_totals", json.dumps(problem_totals(p)))
+        store.set_meta("problem_extras", json.dumps(p.extras))  # read back by the gradebook (bulk.gradebook)
         store.set_meta("root", str(Path(root).resolve()))
         store.set_meta("grader_version", p.version)
         present = {(s.student, s.problem) for s in p.layout.submissions}

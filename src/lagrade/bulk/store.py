@@ -76,7 +76,6 @@ CREATE TABLE IF NOT EXISTS parts (
     answer_mathml  TEXT,                  -- the same as presentation MathML, for the report
     review         TEXT,                  -- for the instructor: why the evidence could not decide the verdict
     detail         TEXT,                  -- for the instructor: the engine's traceback of an `error` verdict
-    extra          INTEGER NOT NULL DEFAULT 0,  -- a part the book does not ask: counted only if the assignment names it
     file_hash      TEXT NOT NULL,
     grader_version TEXT NOT NULL,
     PRIMARY KEY (student, problem, part),
@@ -114,7 +113,6 @@ COLUMNS_ADDED = [
     ("submissions", "jail", "TEXT"),
     ("parts", "review", "TEXT"),
     ("parts", "detail", "TEXT"),
-    ("parts", "extra", "INTEGER NOT NULL DEFAULT 0"),
 ]
 #: ``overrides`` came after SCHEMA_VERSION 1: ``CREATE TABLE IF NOT EXISTS`` adds it to an older gradebook
 #: when a writer opens it; readers of an older gradebook see no overrides (:meth:`Store.overrides`)
@@ -276,11 +274,9 @@ class Store:
                  reason, score, max_score, json.dumps(problems), stdout, source, seconds, now, attempts, jail))
             self.db.executemany(
                 "INSERT INTO parts(student, problem, part, verdict, score, max_score, method, feedback, answer_text, "
-                "answer_mathml, review, detail, extra, file_hash, grader_version) "
-                "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                "answer_mathml, review, detail, file_hash, grader_version) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                 [(student, problem, p["part"], p["verdict"], p["score"], p["max_score"], p["method"], p["feedback"],
-                  p.get("answer_text"), p.get("answer_mathml"), p.get("review"), p.get("detail"),
-                  int(bool(p.get("extra"))), key.file_hash,
+                  p.get("answer_text"), p.get("answer_mathml"), p.get("review"), p.get("detail"), key.file_hash,
                   key.grader_version) for p in parts])
             self.db.execute("INSERT INTO grade_log(student, problem, file_hash, grading_hash, grader_version, graded_at) "
                             "VALUES(?, ?, ?, ?, ?, ?)",
