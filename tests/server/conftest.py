@@ -32,7 +32,8 @@ def quiet_app(tmp_path):
 def graded(tmp_path_factory):
     """One app with warm graders for the whole session: (app, client, alice's headers)."""
     tmp = tmp_path_factory.mktemp("served")
-    app = create_app(make_config(tmp, checks_per_minute=6000, check_burst=1000, workers=1))
+    app = create_app(make_config(tmp, checks_per_minute=6000, check_burst=1000, workers=1, student_in_flight=1000,
+                                 student_grader_seconds_per_minute=1e6))
     with TestClient(app) as client:
         yield app, client, bearer(app, "alice")
 

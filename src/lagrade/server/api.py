@@ -111,7 +111,7 @@ async def submit(server, who, pid: str, suffix: str, data: bytes, plot: bool = F
         server.db.submit, student=who.student, problem=pid, suffix=suffix, data=data, file_hash=file_hash(data),
         grading_hash=server.plan.keys[pid], version=server.plan.version)
     if new and server.queue is not None:
-        server.queue.put(sid, plot)
+        server.queue.put(sid, who.student, plot)
     att = await server.queue.wait(sid, server.config.wait_seconds) if server.queue is not None else None
     if att is None or not att.graded:
         return JSONResponse({"submission_id": sid, "state": "queued",

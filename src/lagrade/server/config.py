@@ -28,6 +28,10 @@ class ServerConfig(BaseModel):
     #: checks per minute and per token, with this many at once (a token bucket)
     checks_per_minute: float = Field(20, gt=0)
     check_burst: int = Field(10, ge=1)
+    #: what one student may have queued or being graded at once, and the grader seconds their
+    #: attempts may use in a minute (beyond either: 429 with Retry-After)
+    student_in_flight: int = Field(3, ge=1)
+    student_grader_seconds_per_minute: float = Field(30, gt=0)
     previews_per_minute: float = Field(90, gt=0)
     preview_burst: int = Field(30, ge=1)
     #: how long a check request waits for its grade before answering "queued" (202)

@@ -354,6 +354,13 @@ class Database:
             return list(c.execute(select(server_submissions.c.id).where(server_submissions.c.state == "queued")
                                   .order_by(server_submissions.c.id)).scalars())
 
+    def queued_by(self) -> list[tuple[int, str]]:
+        """(id, student) of every attempt stored but not graded, oldest first."""
+        with self.engine.connect() as c:
+            return [(r.id, r.student) for r in c.execute(
+                select(server_submissions.c.id, server_submissions.c.student)
+                .where(server_submissions.c.state == "queued").order_by(server_submissions.c.id))]
+
     def counts(self) -> dict[str, int]:
         with self.engine.connect() as c:
             rows = c.execute(select(server_submissions.c.state, func.count()).group_by(server_submissions.c.state))

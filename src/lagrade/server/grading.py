@@ -9,6 +9,12 @@ that the queue never ends: attempts arrive while the graders work, and the grade
 A request waits for its attempt's grade on an asyncio future that this thread resolves. A grader
 that returns a result takes its next job before the grade is written (``look_after``'s
 ``next_job``), so that it works meanwhile.
+
+Fair to students: the queue is a queue per student, served round robin, and one student's attempts
+hold at most ``workers - 1`` graders at once (one, with one grader), so ten infinite loops from one
+student leave a grader to everyone else. :meth:`GradingQueue.admit` caps what a student has in
+flight (queued or grading) and the grader time their attempts used in the last minute; the API
+answers 429 with ``Retry-After`` beyond either.
 """
 
 from __future__ import annotations
@@ -20,7 +26,7 @@ import os
 import tempfile
 import threading
 import time
-from collections import deque
+from collections import defaultdict, deque
 from multiprocessing.connection import wait
 from pathlib import Path
 from typing import Any
@@ -84,12 +90,21 @@ class GradingQueue:
     """A thread that owns ``workers`` warm grader processes and grades stored attempts in order."""
 
     def __init__(self, db: Database, p: Plan, workers: int, scheduler: str | None = None,
-                 problems: dict | None = None) -> None:
+                 problems: dict | None = None, in_flight: int = 3, seconds_per_minute: float = 30.0) -> None:
         """``scheduler``: grade on this Dask cluster (``tcp://host:8786``) as ``lagrade grade --scheduler``
-        does (a warm grader process per Dask worker thread), instead of ``workers`` local processes."""
+        does (a warm grader process per Dask worker thread), instead of ``workers`` local processes.
+        ``in_flight``, ``seconds_per_minute``: what one student may have queued or grading at once,
+        and the grader seconds their attempts may use in a minute (:meth:`admit`)."""
         self.db, self.plan, self.workers, self.scheduler = db, p, workers, scheduler
         self.problems = problems or {}
-        self._jobs: deque[int] = deque()
+        self.in_flight, self.seconds_per_minute = in_flight, seconds_per_minute
+        #: graders one student's attempts may hold at once: never all of them (with one grader, that one)
+        self.per_student = max(1, workers - 1)
+        self._jobs: dict[str, deque[int]] = {}  # queued attempts, per student, in order
+        self._turn: deque[str] = deque()  # students with queued attempts, round robin
+        self._owner: dict[int, str] = {}  # queued or grading attempt -> student
+        self._grading: dict[int, float] = {}  # attempt -> when its grading started
+        self._used: dict[str, deque[tuple[float, float]]] = defaultdict(deque)  # (when done, grader seconds)
         self._plots: set[int] = set()  # attempts whose picture was asked for (the page's)
         self._lock = threading.Lock()
         self._waiters: dict[int, list[tuple[asyncio.AbstractEventLoop, asyncio.Future]]] = {}
@@ -102,25 +117,58 @@ class GradingQueue:
 
     def start(self) -> None:
         """Start the graders, and queue every attempt stored but not graded (a killed server's)."""
-        for sid in self.db.queued():
-            self.put(sid)
+        for sid, student in self.db.queued_by():
+            self.put(sid, student)
         target = self._run if self.scheduler is None else self._run_dask
         self._thread = threading.Thread(target=target, name="lagrade-grading", daemon=True)
         self._thread.start()
 
-    def put(self, sid: int, plot: bool = False) -> None:
-        """Queue a stored attempt; ``plot``: also draw the picture of a wrong motion (it costs 3-5
-        times the grading of a file, so only the page, which shows it, asks for it)."""
+    def put(self, sid: int, student: str, plot: bool = False) -> None:
+        """Queue a stored attempt of ``student``; ``plot``: also draw the picture of a wrong motion (it
+        costs 3-5 times the grading of a file, so only the page, which shows it, asks for it)."""
         with self._lock:
-            if sid not in self._jobs:
-                self._jobs.append(sid)
+            if sid not in self._owner:
+                self._owner[sid] = student
+                if student not in self._jobs:
+                    self._jobs[student] = deque()
+                    self._turn.append(student)
+                self._jobs[student].append(sid)
             if plot:
                 self._plots.add(sid)
         os.write(self._wake_w, b"x")
 
     def pending(self) -> int:
         with self._lock:
-            return len(self._jobs)
+            return sum(len(q) for q in self._jobs.values())
+
+    def admit(self, student: str) -> tuple[float, str] | None:
+        """None if ``student`` may send another attempt now; else (seconds to wait, why): their
+        attempts queued or grading, or the grader seconds their attempts used in the last minute
+        (those grading count with the time they have run so far)."""
+        now = time.monotonic()
+        with self._lock:
+            mine = [sid for sid, who in self._owner.items() if who == student]
+            if len(mine) >= self.in_flight:
+                # a file runs for at most cpu_seconds: by then the oldest of theirs is graded
+                running = [now - self._grading[sid] for sid in mine if sid in self._grading]
+                wait = max(1.0, self.plan.assignment.limits.cpu_seconds - max(running, default=0.0))
+                return wait, (f"you have {len(mine)} checks waiting or being graded (at most {self.in_flight} "
+                              "at once); wait for their grades")
+            used = self._used[student]
+            while used and now - used[0][0] >= 60:
+                used.popleft()
+            spent = sum(s for _, s in used) + sum(now - self._grading[sid] for sid in mine if sid in self._grading)
+            if spent >= self.seconds_per_minute:
+                # wait until enough of the last minute's grading has aged out of the window
+                over, wait = spent - self.seconds_per_minute, 60.0
+                for when, seconds in used:
+                    over -= seconds
+                    if over < 0:
+                        wait = 60 - (now - when)
+                        break
+                return max(1.0, wait), (f"your checks used {spent:.0f} s of grading time in the last minute (at "
+                                        f"most {self.seconds_per_minute:g} s a student)")
+        return None
 
     async def wait(self, sid: int, timeout: float) -> Attempt | None:
         """The attempt once graded, or None if it is still queued after ``timeout`` seconds."""
@@ -169,22 +217,53 @@ class GradingQueue:
             job["plot"] = sid in self._plots
         return job
 
+    def _pick(self) -> int | None:
+        """The next attempt to grade (under the lock): the next student in turn who holds fewer than
+        ``per_student`` graders; None if there is none."""
+        busy: dict[str, int] = {}
+        for sid in self._grading:
+            busy[self._owner[sid]] = busy.get(self._owner[sid], 0) + 1
+        for _ in range(len(self._turn)):
+            student = self._turn[0]
+            self._turn.rotate(-1)
+            if busy.get(student, 0) >= self.per_student:
+                continue
+            queue = self._jobs[student]
+            sid = queue.popleft()
+            if not queue:
+                del self._jobs[student]
+                self._turn.remove(student)
+            self._grading[sid] = time.monotonic()
+            return sid
+        return None
+
+    def _forget(self, sid: int, seconds: float | None = None) -> None:
+        """An attempt leaves the queue (under the lock): graded (``seconds`` of grader time), or unreadable."""
+        student = self._owner.pop(sid, None)
+        self._grading.pop(sid, None)
+        if student is not None and seconds is not None:
+            self._used[student].append((time.monotonic(), seconds))
+
     def _next(self) -> dict[str, Any] | None:
         while True:
             with self._lock:
-                if not self._jobs:
+                sid = self._pick()
+                if sid is None:
                     return None
-                sid = self._jobs.popleft()
             try:
                 job = self._job(sid)
             except Exception:
                 log.exception("attempt %s could not be read; it stays queued", sid)
-                continue
+                job = None
             if job is not None:
                 return job
+            with self._lock:
+                self._forget(sid)
 
     def _done(self, job: dict[str, Any], result: dict[str, Any]) -> None:
         sid = job["server_id"]
+        with self._lock:
+            self._forget(sid, float(result.get("seconds") or 0.0))
         try:
             plot = result.pop("plot_png", None)
             check = check_json(result, self.problems.get(job["problem"]))

@@ -72,7 +72,9 @@ class Server:
     def start(self) -> None:
         from lagrade.server.grading import GradingQueue
 
-        self.queue = GradingQueue(self.db, self.plan, self.config.workers, self.config.scheduler, self.problems)
+        self.queue = GradingQueue(self.db, self.plan, self.config.workers, self.config.scheduler, self.problems,
+                                  in_flight=self.config.student_in_flight,
+                                  seconds_per_minute=self.config.student_grader_seconds_per_minute)
         self.queue.start()
 
     def stop(self) -> None:
@@ -160,6 +162,12 @@ class Server:
         return csrf_token(self.secret, who.session) if who.session else ""
 
     def limit(self, who: Who, preview: bool = False) -> None:
+        """429 with Retry-After: beyond the rate of requests, or (a check) beyond what one student may
+        have in flight or use of the graders' time a minute (:meth:`GradingQueue.admit`)."""
+        if not preview and self.queue is not None and (over := self.queue.admit(who.student)) is not None:
+            wait, why = over
+            seconds = max(1, math.ceil(wait))
+            raise HTTPException(429, f"{why}; try again in {seconds} s", headers={"Retry-After": str(seconds)})
         wait = (self.preview_limit if preview else self.check_limit).take(who.student)
         if wait:
             seconds = max(1, math.ceil(wait))

@@ -1,0 +1,102 @@
+"""A fair queue (issue 32, item 3): a queue per student served round robin, one student never holding
+every grader, and what one student may have in flight or use of the graders' time bounded with a 429
+that says when to come back."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+from fastapi.testclient import TestClient
+from serverkit import REPO, bearer, make_config
+
+from lagrade.server.app import create_app
+from lagrade.server.grading import GradingQueue
+
+LOOP = b"while True:\n    pass\n"
+
+
+@pytest.fixture
+def quiet_app(tmp_path):
+    """An app without graders that answers 202 at once (its checks stay queued)."""
+    app = create_app(make_config(tmp_path, checks_per_minute=600, check_burst=100, wait_seconds=0.05), grade=False)
+    with TestClient(app) as client:
+        yield app, client
+
+
+def _queue(app, workers: int = 2, **kw) -> GradingQueue:
+    """The server's queue, not started (no grader): attempts are queued and picked, never graded."""
+    server = app.state.server
+    server.queue = GradingQueue(server.db, server.plan, workers, problems=server.problems, **kw)
+    return server.queue
+
+
+def test_one_students_many_attempts_do_not_go_before_anothers(quiet_app):
+    app, client = quiet_app
+    q = _queue(app, workers=2, in_flight=100)
+    alice, bob = bearer(app, "alice"), bearer(app, "bob")
+    mine = [client.post("/api/v1/problems/12.14/check", headers=alice, files={"file": ("answer.py", LOOP + b"#%d" % i)})
+            .json()["submission_id"] for i in range(10)]
+    theirs = client.post("/api/v1/problems/12.14/check", headers=bob, json={"answer": {"L": "m1"}}).json()["submission_id"]
+    first = q._next()["server_id"]
+    second = q._next()  # alice holds one grader of two: the other is bob's
+    assert first == mine[0] and second is not None and second["server_id"] == theirs
+    assert q._next() is None  # alice's next waits for her first: never both graders
+    q._done({"server_id": first}, {"seconds": 1.0, "outcome": "graded", "parts": []})
+    assert q._next()["server_id"] == mine[1]
+
+
+def test_a_student_beyond_the_attempts_in_flight_gets_429_with_retry_after(quiet_app):
+    app, client = quiet_app
+    _queue(app, in_flight=3)
+    alice, bob = bearer(app, "alice"), bearer(app, "bob")
+    codes = [client.post("/api/v1/problems/12.14/check", headers=alice, files={"file": ("answer.py", LOOP + b"#%d" % i)})
+             for i in range(4)]
+    assert [r.status_code for r in codes] == [202, 202, 202, 429]
+    assert int(codes[-1].headers["retry-after"]) >= 1 and "3 checks waiting" in codes[-1].json()["detail"]
+    assert client.post("/api/v1/problems/12.14/check", headers=bob, json={"answer": {"L": "m1"}}).status_code == 202
+
+
+def test_a_student_beyond_the_grader_time_a_minute_gets_429_with_retry_after(quiet_app):
+    app, client = quiet_app
+    q = _queue(app, seconds_per_minute=30)
+    alice = bearer(app, "alice")
+    q._used["alice"].append((time.monotonic() - 20, 31.0))  # 31 s of grading, 20 s ago
+    r = client.post("/api/v1/problems/12.14/check", headers=alice, json={"answer": {"L": "m1"}})
+    assert r.status_code == 429 and "31 s of grading time in the last minute" in r.json()["detail"]
+    assert 35 <= int(r.headers["retry-after"]) <= 41  # when those 31 s leave the minute
+
+
+@pytest.mark.slow
+def test_a_right_answer_is_graded_within_5_s_behind_another_students_ten_loops(tmp_path):
+    """The head-of-line probe of benchmarks/serve_load.py, on two graders: ten infinite loops from
+    alice (each costs its 10 s of CPU), then bob's right answer."""
+    config = make_config(tmp_path, workers=2, wait_seconds=0.2, checks_per_minute=600, check_burst=100,
+                         student_in_flight=10, student_grader_seconds_per_minute=1000)
+    app = create_app(config)
+    right = (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes()
+    with TestClient(app) as client:
+        carol = bearer(app, "carol")  # one check first, graded once the graders are warm (bounded)
+        _graded(client, carol, client.post("/api/v1/problems/12.14/check", headers=carol,
+                                           files={"file": ("answer.py", right + b"# warm")}).json()["submission_id"], 120)
+        alice, bob = bearer(app, "alice"), bearer(app, "bob")
+        for i in range(10):
+            assert client.post("/api/v1/problems/12.14/check", headers=alice,
+                               files={"file": ("answer.py", LOOP + b"#%d" % i)}).status_code == 202
+        sent = time.monotonic()
+        sid = client.post("/api/v1/problems/12.14/check", headers=bob,
+                          files={"file": ("answer.py", right)}).json()["submission_id"]
+        r = _graded(client, bob, sid, 30)
+        waited = time.monotonic() - sent
+        assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
+        assert waited < 5, f"bob's right answer waited {waited:.1f} s behind alice's loops"
+
+
+def _graded(client, headers, sid: int, seconds: float):
+    """The attempt's response once graded, or the last one after ``seconds``."""
+    end = time.monotonic() + seconds
+    while True:
+        r = client.get(f"/api/v1/submissions/{sid}", headers=headers)
+        if r.status_code != 202 or time.monotonic() > end:
+            return r
+        time.sleep(0.1)
