@@ -97,3 +97,39 @@ def test_preview_is_bounded(quiet_app):
     assert "characters of LaTeX" in r["error"] and r.get("mathml") is None
     r = browser.post(url, headers=csrf, json={"part": "L", "value": "x + " * 600}).json()
     assert "longer than" in r["error"]
+
+
+def test_a_preview_that_never_ends_is_cut_off_and_the_server_keeps_answering(tmp_path):
+    """A power bomb typed in a field (issue 32): its preview is read in the preview process, cut off
+    after ``preview_seconds``, while /healthz answers; the next preview is read again."""
+    import threading
+    import time
+
+    from fastapi.testclient import TestClient
+    from serverkit import make_config
+
+    from lagrade.server.app import create_app
+
+    app = create_app(make_config(tmp_path, preview_seconds=3), grade=False)
+    with TestClient(app) as client:
+        browser, csrf = _browser(app, client, "alice")
+        url = "/api/v1/problems/12.22/preview"
+        assert browser.post(url, headers=csrf, json={"part": "L", "value": "m1*x_d^2"}).json()["error"] is None
+        bomb = "(" * 30 + "3*g*x_d" + ")^2" * 30
+        out: dict = {}
+        ask = threading.Thread(target=lambda: out.update(browser.post(url, headers=csrf,
+                                                                      json={"part": "L", "value": bomb}).json()),
+                               daemon=True)
+        started = time.monotonic()
+        ask.start()
+        slowest = 0.0
+        while ask.is_alive() and time.monotonic() - started < 20:
+            t = time.monotonic()
+            assert client.get("/healthz").status_code == 200
+            slowest = max(slowest, time.monotonic() - t)
+            time.sleep(0.2)
+        ask.join(timeout=max(0.0, 20 - (time.monotonic() - started)))
+        assert not ask.is_alive(), "the preview of a power bomb did not end in 20 s"
+        assert "longer than 3 s" in out["error"] and slowest < 1.0
+        r = browser.post(url, headers=csrf, json={"part": "L", "value": "m1*x_d^2"}).json()
+        assert r["error"] is None and "<math" in r["mathml"]

@@ -96,7 +96,7 @@ def as_math(mathml: str | None) -> str | None:
     return f'<math display="inline">{mathml}</math>'
 
 
-#: a preview is parsed in the server process, as often as a student types: bounded so that one
+#: a preview is parsed (in the preview process, lagrade.server.preview) as often as a student types: bounded so that one
 #: preview costs at most about a second (sympy's LaTeX parser takes ~2 ms a character)
 MAX_PREVIEW_CHARS = 2000
 MAX_PREVIEW_LATEX = 500

@@ -34,5 +34,7 @@ class ServerConfig(BaseModel):
     student_grader_seconds_per_minute: float = Field(30, gt=0)
     previews_per_minute: float = Field(90, gt=0)
     preview_burst: int = Field(30, ge=1)
+    #: wall-clock seconds one preview may take in the preview process (then it is killed and restarted)
+    preview_seconds: float = Field(5, gt=0)
     #: how long a check request waits for its grade before answering "queued" (202)
     wait_seconds: float = Field(120, gt=0)

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import hmac
 import math
-import threading
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -13,6 +12,7 @@ from fastapi import HTTPException, Request
 
 from lagrade.server.config import ServerConfig
 from lagrade.server.limits import RateLimit
+from lagrade.server.preview import PreviewWorker
 from lagrade.server.tokens import INSTRUCTOR, csrf_token, student_of
 
 SESSION_COOKIE = "lagrade_session"
@@ -63,7 +63,7 @@ class Server:
         self.roster = set(config.roster) if config.roster is not None else None
         self.check_limit = RateLimit(config.checks_per_minute, config.check_burst)
         self.preview_limit = RateLimit(config.previews_per_minute, config.preview_burst)
-        self.preview_slot = threading.Lock()
+        self.previews = PreviewWorker(config.problems_dirs, config.preview_seconds)
         self.queue = None
         # made once, here: the same text for every request
         self._texts = {(command, pid): self._print(command, pid) for pid in self.problems
@@ -80,6 +80,7 @@ class Server:
     def stop(self) -> None:
         if self.queue is not None:
             self.queue.stop()
+        self.previews.stop()
         self.db.close()
 
     # ------------------------------------------------------------------ problems
