@@ -200,3 +200,41 @@ def test_only_grader_failures_are_retried(tmp_path, status):
                   parts=[])
         assert store.record(**kw) is True
         assert store.retries() == set() and store.record(**kw) is False
+
+
+def test_a_file_that_hits_a_bound_is_final_with_its_reason(tmp_path):
+    """Issue 32: a file whose grading ran out of its CPU bound is the file's cost, not the grader's
+    failure: recorded once as `timeout` with the reason, not graded again by the next run."""
+    root, hw, db = _class(tmp_path)
+    # a 1000-term Hamiltonian: its comparison costs far more than the bound (verdicts of the reference's
+    # own values come from the grader's memo at no cost)
+    (root / "ada" / "12.43.py").write_text(
+        "from lagrade.answer import *\nm, l, g = parameters('m l g')\ntheta = coordinates('theta')\n"
+        "p_theta = momenta('p_theta')\nH = p_theta**2/(2*m*l**2) + sum(cos(k*theta)/k for k in range(1, 1001))\n")
+    hw.write_text(classgen.assignment_toml(["12.43"], cpu=10, wall=30).replace("grading_seconds = 60", "grading_seconds = 0.01"))
+    first = grade_folder(root, load_assignment(hw), db, workers=1)
+    assert first.todo == 2
+    row = _row(db, "ada")
+    assert row["status"] == "timeout" and row["outcome"] == "failed" and "took longer than 0.01 s" in row["reason"]
+    again = grade_folder(root, load_assignment(hw), db, workers=1)
+    assert again.todo == 0 and _row(db, "ada")["attempts"] == 1 and _row(db, "ada")["log"] == 1
+
+
+def test_a_grading_past_the_hard_deadline_is_final(tmp_path, monkeypatch):
+    """A grader stuck past every bound (a power bomb built while holding the GIL) is killed and the
+    file recorded as `timeout` with the reason: not retried at that cost on the next run."""
+    from lagrade.bulk import worker
+
+    root, hw, db = _class(tmp_path)
+    # a 1000-term Hamiltonian: its comparison costs far more than the bound (verdicts of the reference's
+    # own values come from the grader's memo at no cost)
+    (root / "ada" / "12.43.py").write_text(
+        "from lagrade.answer import *\nm, l, g = parameters('m l g')\ntheta = coordinates('theta')\n"
+        "p_theta = momenta('p_theta')\nH = p_theta**2/(2*m*l**2) + sum(cos(k*theta)/k for k in range(1, 1001))\n")
+    (root / "kim" / "12.43.py").unlink()
+    hw.write_text(classgen.assignment_toml(["12.43"], cpu=10, wall=30))
+    monkeypatch.setattr(worker, "hard_deadline", lambda limits: 0.0)  # a grading that takes any time overruns
+    assert grade_folder(root, load_assignment(hw), db, workers=1).todo == 1
+    row = _row(db, "ada")
+    assert row["status"] == "timeout" and "did not finish in 0 s" in row["reason"]
+    assert grade_folder(root, load_assignment(hw), db, workers=1).todo == 0

@@ -28,6 +28,7 @@ from lagrade.bulk.worker import (
     GraderProcess,
     WorkerDied,
     failed_result,
+    overran,
     hard_deadline,
     look_after,
     stop_all,
@@ -233,9 +234,7 @@ def dask_grade(job: dict[str, Any], sources: dict[str, str]) -> dict[str, Any]:
         result = g.result(timeout=hard_deadline(job["limits"]))
     except TimeoutError:
         g.kill()
-        return failed_result(job, job["parts"], "grader-timeout",
-                             f"grading this file did not finish in {hard_deadline(job['limits']):g} s",
-                             time.monotonic() - start)
+        return failed_result(job, job["parts"], "timeout", overran(job["limits"]), time.monotonic() - start)
     except WorkerDied:
         g.kill()
         return failed_result(job, job["parts"], "grader-crash",

@@ -7,9 +7,11 @@ one transaction when its submission finishes, together with a line in ``grade_lo
 is graded again only when one of those three keys changed. Killing the run at any moment loses at
 most the submissions in flight (their transactions never committed) and doubles none.
 
-A submission whose grader failed (``grader-crash``, ``grader-timeout``: lagrade's fault, not the
-file's) is graded once more by the next run; ``attempts`` counts the gradings of one key, so that
-a file that kills its grader every time is not retried forever.
+A submission whose grader failed (``grader-crash``, and ``grader-timeout`` in gradebooks of older
+versions: lagrade's fault, not the file's) is graded once more by the next run; ``attempts`` counts
+the gradings of one key, so that a file that kills its grader every time is not retried forever. A
+file that hit a bound (the grading CPU bound, the hard deadline, the sandbox's time or memory) is
+the file's cost: ``timeout`` or ``memory``, final, with the reason.
 
 Only the coordinating process writes; workers send their results to it. A path that is not a
 gradebook (a folder, another file, another program's database, a damaged one) is refused with

@@ -110,8 +110,8 @@ class Grader:
                         picture = _picture(grade_values(problem, loaded, job["accuracy"], read_as=(),
                                                         credit=Credit.model_validate(job["credit"])
                                                         if job.get("credit") else None))
-        except GradingOutOfTime as exc:
-            return failed_result(job, problem_parts(problem), "grader-timeout", str(exc), time.monotonic() - start)
+        except GradingOutOfTime as exc:  # the file's cost, not the grader's fault: final, never retried
+            return failed_result(job, problem_parts(problem), "timeout", str(exc), time.monotonic() - start)
         finally:
             shutil.rmtree(work, ignore_errors=True)
         unusable = loaded.fatal is not None and not loaded.values
@@ -421,6 +421,13 @@ def stop_all(graders: list[GraderProcess]) -> None:
         g.remove_dir()  # already gone unless the process failed before it could remove it
 
 
+def overran(limits: dict[str, float]) -> str:
+    """The reason of a file whose grading overran the hard deadline: a bound it hit (its cost, beyond
+    the CPU bound, as a power bomb built while holding the GIL), final like any timeout."""
+    return (f"grading this file did not finish in {hard_deadline(limits):g} s (beyond every time bound of the "
+            "assignment); the grader was stopped")
+
+
 def hard_deadline(limits: dict[str, float]) -> float:
     """Seconds after which the coordinator kills a grader process stuck on one job."""
     return limits["wall_seconds"] + 2 * limits["grading_seconds"] + 30
@@ -461,9 +468,7 @@ def look_after(graders: list[GraderProcess], sources: dict[str, str], ready: lis
         elif g.ready and now - g.started > hard_deadline(job["limits"]):
             g.kill()
             graders[i] = GraderProcess(sources)
-            done(job, failed_result(job, job["parts"], "grader-timeout",
-                                    f"grading this file did not finish in {hard_deadline(job['limits']):g} s",
-                                    now - g.started))
+            done(job, failed_result(job, job["parts"], "timeout", overran(job["limits"]), now - g.started))
         elif not g.ready and now - g.started > 600:
             raise WorkerDied("a grader process did not warm up in 10 minutes")
 
