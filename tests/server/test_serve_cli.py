@@ -121,3 +121,56 @@ def test_serve_refuses_a_database_that_is_not_a_gradebook(tmp_path):
     bad.write_text('[[problems]]\nid = "12.999"\n', encoding="utf-8")
     out = CliRunner().invoke(main, ["serve", "--assignment", str(bad), "--db", str(tmp_path / "x.sqlite")])
     assert out.exit_code == 2 and "12.999" in out.output
+
+
+def _serve(tmp_path, db: str, monkeypatch):
+    """``lagrade serve`` up to where it would serve (uvicorn.run does nothing here)."""
+    import uvicorn
+
+    monkeypatch.setattr(uvicorn, "run", lambda *a, **kw: None)
+    (tmp_path / "hw.toml").write_text(ASSIGNMENT, encoding="utf-8")
+    return CliRunner().invoke(main, ["serve", "--assignment", str(tmp_path / "hw.toml"), "--db", db,
+                                     "--unsafe-trusted-files", "--port", "1"])
+
+
+def test_an_empty_or_foreign_database_file_is_refused_in_one_line(tmp_path, monkeypatch):
+    """Issue 32: a 0-byte file was made into a new course with a new signing secret (every token
+    issued stopped working). An existing file that is not a server's database is refused, untouched."""
+    import sqlite3
+
+    from lagrade.bulk.store import Store
+
+    empty = tmp_path / "empty.sqlite"
+    empty.write_bytes(b"")
+    other = tmp_path / "other.sqlite"
+    with sqlite3.connect(other) as con:
+        con.execute("CREATE TABLE notes (x)")
+    gradebook = tmp_path / "hw.sqlite"
+    Store(gradebook).close()
+    text = tmp_path / "notes.txt"
+    text.write_text("not a database\n", encoding="utf-8")
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student\nada\n", encoding="utf-8")
+    for path, why in [(empty, "is empty (0 bytes)"), (other, "an SQLite database of something else"),
+                      (gradebook, "a gradebook of lagrade grade"), (text, "not an SQLite file")]:
+        before = path.read_bytes()
+        for out in (_serve(tmp_path, str(path), monkeypatch), CliRunner().invoke(main, ["tokens", str(roster), "--db", str(path)])):
+            assert out.exit_code == 1, out.output
+            lines = out.output.strip().splitlines()
+            assert len(lines) == 1 and why in lines[0] and "not a lagrade serve database" in lines[0], out.output
+        assert path.read_bytes() == before
+    assert CliRunner().invoke(main, ["tokens", str(roster), "--db", str(tmp_path / "new.sqlite")]).exit_code == 0
+
+
+def test_the_database_password_is_never_printed(tmp_path, monkeypatch):
+    from lagrade.cli.serve import banner
+
+    url = "postgresql+psycopg://lg:s3cret-pw@127.0.0.1:1/course"
+    out = _serve(tmp_path, url, monkeypatch)  # nothing listens on port 1: the error names the database
+    assert out.exit_code == 1 and "s3cret-pw" not in out.output and "lg:***@127.0.0.1:1/course" in out.output
+    roster = tmp_path / "roster.csv"
+    roster.write_text("student\nada\n", encoding="utf-8")
+    out = CliRunner().invoke(main, ["tokens", str(roster), "--db", url])
+    assert out.exit_code == 1 and "s3cret-pw" not in out.output and "***" in out.output
+    line = banner(url, 3, False)
+    assert "s3cret-pw" not in line and "database postgresql+psycopg://lg:***@127.0.0.1:1/course" in line

@@ -59,6 +59,7 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     from lagrade.cli.bulk import _require_jail
     from lagrade.server.app import create_app
     from lagrade.server.config import ServerConfig
+    from lagrade.server.db import NotAServerDatabase, masked
     from lagrade.server.tokens import INSTRUCTOR, issue
 
     err = Console(stderr=True, highlight=False)
@@ -68,17 +69,33 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
                           problems_dirs=problems_dir, workers=workers, scheduler=scheduler)
     try:
         app = create_app(config)
+    except NotAServerDatabase as exc:
+        raise click.ClickException(str(exc)) from None
     except ValueError as exc:
-        raise click.UsageError(str(exc)) from None
+        raise click.UsageError(masked(str(exc), db)) from None
     except Exception as exc:  # noqa: BLE001  (a database that cannot be opened: one line)
-        raise click.ClickException(f"{db}: cannot be used as the server's database ({type(exc).__name__}: "
-                                   f"{' '.join(str(exc).split())[:300]})") from None
+        raise click.ClickException(_cannot_use(db, exc)) from None
     token = issue(app.state.server.secret, INSTRUCTOR)
-    shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
-    err.print(f"lagrade serve: {len(config.roster or ())} students on the roster, "
-              f"{'open (no tokens)' if open_ else 'tokens required'}, database {db}")
-    err.print(f"class page: http://{shown}:{port}/login?token={token}", soft_wrap=True)
+    address = "127.0.0.1" if host in ("0.0.0.0", "::") else host
+    err.print(banner(db, len(config.roster or ()), open_), soft_wrap=True)
+    err.print(f"class page: http://{address}:{port}/login?token={token}", soft_wrap=True)
     uvicorn.run(app, host=host, port=port, log_level="warning", timeout_graceful_shutdown=10)
+
+
+def banner(db: str, students: int, open_: bool) -> str:
+    """The start banner's first line (the database's password masked)."""
+    from lagrade.server.db import shown
+
+    return (f"lagrade serve: {students} students on the roster, "
+            f"{'open (no tokens)' if open_ else 'tokens required'}, database {shown(db)}")
+
+
+def _cannot_use(db: str, exc: Exception) -> str:
+    """One line: the database cannot be used, and why (its password masked, in the URL and the error)."""
+    from lagrade.server.db import masked, shown
+
+    why = masked(" ".join(str(exc).split()), db)[:300]
+    return f"{shown(db)}: cannot be used as the server's database ({type(exc).__name__}: {why})"
 
 
 @click.command("tokens")
@@ -88,7 +105,7 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
 def tokens(roster: Path, db: str, url: str | None) -> None:
     """One token per student of ROSTER (CSV on stdout: student,token[,link]); the last row is the instructor's."""
     _need_server_extra()
-    from lagrade.server.db import Database
+    from lagrade.server.db import Database, NotAServerDatabase
     from lagrade.server.tokens import INSTRUCTOR, issue
 
     names = _roster(roster)
@@ -96,8 +113,10 @@ def tokens(roster: Path, db: str, url: str | None) -> None:
         database = Database(db)
         secret = database.secret()
         database.close()
+    except NotAServerDatabase as exc:
+        raise click.ClickException(str(exc)) from None
     except Exception as exc:  # noqa: BLE001
-        raise click.ClickException(f"{db}: cannot be used as the server's database ({' '.join(str(exc).split())[:300]})")
+        raise click.ClickException(_cannot_use(db, exc)) from None
     out = io.StringIO()
     w = csv.writer(out)
     w.writerow(["student", "token"] + (["link"] if url else []))

@@ -113,6 +113,61 @@ server_submissions = Table(
 )
 
 
+class NotAServerDatabase(ValueError):
+    """An existing file that is not a course server's database (empty, another program's, a
+    gradebook of ``lagrade grade``): refused, never made into a new course with a new secret."""
+
+
+def shown(db: str) -> str:
+    """``db`` as it may be printed: a URL's password masked (``postgresql+psycopg://user:***@host/db``)."""
+    if "://" not in db:
+        return db
+    try:
+        from sqlalchemy.engine import make_url
+
+        return make_url(db).render_as_string(hide_password=True)
+    except Exception:  # noqa: BLE001  (a URL SQLAlchemy cannot read: nothing after the scheme is shown)
+        return db.split("://", 1)[0] + "://***"
+
+
+def masked(text: str, db: str) -> str:
+    """``text`` (an error's message) with the password of ``db`` masked wherever it appears."""
+    if "://" not in db:
+        return text
+    try:
+        from sqlalchemy.engine import make_url
+
+        password = make_url(db).password
+    except Exception:  # noqa: BLE001
+        return text.replace(db, shown(db))
+    text = text.replace(db, shown(db))
+    return text.replace(str(password), "***") if password else text
+
+
+def refuse_foreign(path: Path) -> None:
+    """Refuse an existing file that is not a server's database, in one line (a path that does not
+    exist is a new course). An empty file would otherwise be made into a new course silently, with
+    a new signing secret: every token issued would stop working."""
+    import sqlite3
+
+    if not path.exists() or path.is_dir():
+        return  # a folder: Store says so
+    advice = "give the course's database with --db, or a path that does not exist yet to start a new course"
+    if path.stat().st_size == 0:
+        raise NotAServerDatabase(f"{path} is empty (0 bytes), not a lagrade serve database; {advice}")
+    try:
+        con = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
+        try:
+            tables = {r[0] for r in con.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
+        finally:
+            con.close()
+    except sqlite3.DatabaseError:
+        raise NotAServerDatabase(f"{path} is not a lagrade serve database (not an SQLite file); {advice}") from None
+    if "server_submissions" not in tables:
+        what = "a gradebook of lagrade grade" if "submissions" in tables else "an SQLite database of something else"
+        raise NotAServerDatabase(f"{path} is not a lagrade serve database ({what}); {advice}")
+
+
 class DatabaseBusy(RuntimeError):
     """Another server serves this database already; the message says which and what to do."""
 
@@ -171,6 +226,7 @@ class Database:
             from lagrade.bulk.store import Store
 
             self.sqlite_path = Path(self.url.removeprefix("sqlite:///"))
+            refuse_foreign(self.sqlite_path)
             Store(self.sqlite_path).close()  # the gradebook schema, exactly as `lagrade grade` makes it
             self.engine: Engine = create_engine(self.url, connect_args={"timeout": 30, "check_same_thread": False})
             event.listen(self.engine, "connect", _sqlite_pragmas)
