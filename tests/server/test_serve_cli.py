@@ -115,7 +115,7 @@ def test_serve_refuses_a_database_that_is_not_a_gradebook(tmp_path):
     notes = tmp_path / "notes.sqlite"
     notes.write_text("my notes\n", encoding="utf-8")
     out = CliRunner().invoke(main, ["serve", "--assignment", str(tmp_path / "hw.toml"), "--db", str(notes)])
-    assert out.exit_code == 1 and "is not a lagrade gradebook" in out.output
+    assert out.exit_code == 1 and "is not a lagrade serve database (not an SQLite file)" in out.output
     assert len(out.output.strip().splitlines()) == 1 and notes.read_text() == "my notes\n"
     bad = tmp_path / "bad.toml"
     bad.write_text('[[problems]]\nid = "12.999"\n', encoding="utf-8")

@@ -133,3 +133,24 @@ def test_a_preview_that_never_ends_is_cut_off_and_the_server_keeps_answering(tmp
         assert "longer than 3 s" in out["error"] and slowest < 1.0
         r = browser.post(url, headers=csrf, json={"part": "L", "value": "m1*x_d^2"}).json()
         assert r["error"] is None and "<math" in r["mathml"]
+
+
+def test_a_browsers_errors_are_pages_of_the_site_not_json(quiet_app):
+    """Issue 32: `?attempt=abc` and an expired CSRF token came back as raw JSON in the browser."""
+    app, client = quiet_app
+    browser, csrf = _browser(app, client, "alice")
+    style = "font: 15px/1.45 system-ui"  # base.html's
+    r = browser.get("/p/12.22", params={"attempt": "abc"})
+    assert r.status_code == 422 and r.headers["content-type"].startswith("text/html")
+    assert style in r.text and "attempt=&#39;abc&#39; is not understood" in r.text and 'href="/p/12.22"' in r.text
+    r = browser.post("/p/12.22/check", data={"f:L": "m1*x_d^2", "csrf": "expired"})
+    assert r.status_code == 403 and r.headers["content-type"].startswith("text/html")
+    assert style in r.text and "CSRF token" in r.text and "Content-Security-Policy" in r.headers
+    r = browser.get("/p/12.22", params={"attempt": 999})
+    assert r.status_code == 404 and style in r.text
+    r = browser.get("/class/")
+    assert r.status_code == 401 and style in r.text
+    # the API keeps answering JSON
+    r = browser.get("/api/v1/submissions/abc")
+    assert r.status_code == 422 and r.headers["content-type"].startswith("application/json")
+    assert browser.get("/api/v1/problems/nope").json()["detail"].startswith("no problem")

@@ -7,7 +7,10 @@ from __future__ import annotations
 
 from contextlib import asynccontextmanager
 
-from fastapi import FastAPI
+from fastapi import FastAPI, Request
+from fastapi.exception_handlers import http_exception_handler, request_validation_exception_handler
+from fastapi.exceptions import RequestValidationError
+from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from lagrade.server import api, web
 from lagrade.server.config import ServerConfig
@@ -36,5 +39,24 @@ def create_app(config: ServerConfig, *, grade: bool = True) -> FastAPI:
     app.include_router(api.router)
     app.include_router(web.router)
     app.add_middleware(BodyLimit, max_bytes=config.max_body)
+
+    # the API answers errors as JSON (one line in `detail`); a browser's pages as a page of the site
+    @app.exception_handler(StarletteHTTPException)
+    async def http_error(request: Request, exc: StarletteHTTPException):
+        if _api(request):
+            return await http_exception_handler(request, exc)
+        return web.error_page(request, exc.status_code, str(exc.detail), getattr(exc, "headers", None))
+
+    @app.exception_handler(RequestValidationError)
+    async def invalid_request(request: Request, exc: RequestValidationError):
+        if _api(request):
+            return await request_validation_exception_handler(request, exc)
+        return web.error_page(request, 422, web.one_line_invalid(exc))
+
     return app
+
+
+def _api(request: Request) -> bool:
+    path = request.url.path
+    return path.startswith("/api/") or path in ("/openapi.json", "/healthz")
 

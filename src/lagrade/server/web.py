@@ -38,6 +38,31 @@ def _page(request: Request, name: str, context: dict, status: int = 200, cookie:
     return response
 
 
+def error_page(request: Request, status: int, message: str, headers: dict | None = None) -> HTMLResponse:
+    """A browser's error as a page of the site (one line, and the way back), not raw JSON."""
+    parts = request.url.path.split("/")
+    back = f"/p/{parts[2]}" if len(parts) > 2 and parts[1] == "p" and parts[2] else None
+    titles = {401: "Sign in first", 403: "Not allowed", 404: "Not found", 422: "Not understood",
+              429: "Too many checks"}
+    response = _page(request, "error.html", {"title": titles.get(status, "Something went wrong"), "who": None,
+                                             "error": message, "status": status, "back": back}, status=status)
+    for name, value in (headers or {}).items():
+        response.headers[name] = value
+    return response
+
+
+def one_line_invalid(exc) -> str:
+    """A request's invalid query or path value in one line: which, what was sent, what was expected."""
+    errors = exc.errors()
+    if not errors:
+        return "the request was not understood"
+    e = errors[0]
+    where = str(e["loc"][-1]) if e.get("loc") else "the request"
+    sent = e.get("input")
+    return f"{where}={sent!r} is not understood: {e['msg'].lower()}" if sent is not None else \
+        f"{where}: {e['msg'].lower()}"
+
+
 def _set_session(response: Response, token: str) -> None:
     response.set_cookie(SESSION_COOKIE, token, httponly=True, samesite="strict", max_age=180 * 24 * 3600)
 
