@@ -23,7 +23,9 @@ import asyncio
 import json
 import logging
 import os
+import re
 import tempfile
+import tomllib
 import threading
 import time
 from collections import defaultdict, deque
@@ -84,6 +86,52 @@ def _read_back(problem, text: str) -> tuple[str | None, str]:
         return as_latex(value), as_unicode(value)
     except Exception:  # noqa: BLE001  (a value clipped for length, a form the reader does not take)
         return None, text
+
+
+#: a folder of lagrade's own (a grader's, a job's, the server's), wherever it is: never shown to a student
+_OWN_FOLDER = re.compile(r"(?:/[^\s'\"/:]+)*/lagrade-(?:grader|job|serve|preview|class)[^\s'\"/:]*(?:/[^\s'\"/:]+)*")
+
+
+def typed(suffix: str, data: bytes) -> bool:
+    """Whether an attempt is text typed on the page or sent as JSON (the canonical answer.toml the
+    server writes for it), rather than a file the student uploaded."""
+    if suffix != ".toml":
+        return False
+    from lagrade.server.answers import AnswerTextError, to_toml
+
+    try:
+        return to_toml(tomllib.loads(data.decode("utf-8"))) == data
+    except (ValueError, AnswerTextError):
+        return False
+
+
+def for_student(text: str, problem: str, suffix: str, is_typed: bool) -> str:
+    """A grader's message as a student may read it: the file the grader wrote (``12.14.py`` in its
+    temporary folder) named as the student's ``answer.py``; for typed text, which has no file, no
+    file name at all (``12.14.toml:2: eom: ...`` is ``eom: ...``: the part is named already); no
+    server folder anywhere."""
+    name = re.escape(f"{problem}{suffix}")
+    if is_typed:
+        text = re.sub(rf"(?:/[^\s'\"/:]+)*/?(?<![\w.]){name}:\d+: ", "", text)
+        text = re.sub(rf"(?:/[^\s'\"/:]+)*/?(?<![\w.]){name}(?::\d+)?", "your answer", text)
+    else:
+        text = re.sub(rf"(?:/[^\s'\"/:]+)*/?(?<![\w.]){name}", f"answer{suffix}", text)
+    return _OWN_FOLDER.sub("(the grader's folder)", text)
+
+
+def _for_student(result: dict[str, Any], problem: str, suffix: str, data: bytes) -> dict[str, Any]:
+    """A copy of a grader's result whose texts are fit for the student (:func:`for_student`)."""
+    t = typed(suffix, data)
+
+    def fix(v):
+        return for_student(v, problem, suffix, t) if isinstance(v, str) else v
+
+    out = dict(result)
+    out["reason"] = fix(result.get("reason", ""))
+    out["problems"] = [fix(x) for x in result.get("problems", [])]
+    out["parts"] = [{**p, "feedback": fix(p.get("feedback", "")), "review": fix(p.get("review"))}
+                    for p in result.get("parts", [])]
+    return out
 
 
 class GradingQueue:
@@ -266,7 +314,8 @@ class GradingQueue:
             self._forget(sid, float(result.get("seconds") or 0.0))
         try:
             plot = result.pop("plot_png", None)
-            check = check_json(result, self.problems.get(job["problem"]))
+            shown = _for_student(result, job["problem"], job["suffix"], job["data"])
+            check = check_json(shown, self.problems.get(job["problem"]))
             if plot:
                 check["plot"] = f"/api/v1/submissions/{sid}/plot.png"
             self.db.finish(sid, result, check, plot)
