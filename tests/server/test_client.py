@@ -80,3 +80,38 @@ def test_the_report_is_a_local_checks(graded, live_url):
         assert read_as(remote.output) == read_as(local.output)
         table = [line for line in remote.output.splitlines() if "verdict" in line or line.strip().startswith("total")]
         assert table == [line for line in local.output.splitlines() if "verdict" in line or line.strip().startswith("total")]
+
+
+def test_a_check_whose_answer_a_crash_cut_off_is_found_again(graded, live_url, monkeypatch, tmp_path):
+    """Issue 32: the connection cut after the upload (a server killed mid-request, a proxy) left the
+    student with no id. The server stores before it grades: the client finds its file among the
+    attempts (by sha256) and waits for that attempt's grade."""
+    import http.client
+    import urllib.request
+
+    import lagrade.server.client as client
+
+    app = graded[0]
+    real, cut = urllib.request.urlopen, []
+
+    def cutting(req, *a, **kw):
+        response = real(req, *a, **kw)
+        if req.get_method() == "POST" and not cut:  # the server got it and answered; the answer is lost
+            response.read()
+            response.close()
+            cut.append(req.full_url)
+            raise http.client.RemoteDisconnected("Remote end closed connection without response")
+        return response
+
+    monkeypatch.setattr(urllib.request, "urlopen", cutting)
+    answer = tmp_path / "answer.py"
+    answer.write_bytes((REPO / "reference_solutions" / "12.22" / "answer.py").read_bytes() + b"\n# cut off\n")
+    out = client.remote_check(live_url, issue(app.state.server.secret, "alice"), "12.22", answer)
+    assert cut and out["state"] == "graded" and out["score"] == out["max_score"]
+    assert out["submission_id"] == max(a.id for a in app.state.server.db.attempts("alice", "12.22"))
+    lost = tmp_path / "lost.toml"
+    lost.write_text('L = "m1"\n', encoding="utf-8")
+    monkeypatch.setattr(client, "_stored", lambda *a: None)  # the server did not store it
+    cut.clear()
+    with pytest.raises(client.ClientError, match="cut before the server answered.*send it again"):
+        client.remote_check(live_url, issue(app.state.server.secret, "alice"), "12.22", lost)

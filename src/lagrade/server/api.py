@@ -166,11 +166,12 @@ def plot(sid: int, request: Request) -> Response:
 
 @router.get("/problems/{pid}/submissions")
 def submissions(pid: str, request: Request) -> list[dict]:
-    """Your earlier attempts at a problem, newest first."""
+    """Your earlier attempts at a problem, newest first, stored but not graded yet too (``state``:
+    ``queued``); ``file_hash`` (sha256 of the file) finds an attempt whose answer a crash cut off."""
     server = _server(request)
     who = server.identify(request)
     server.problem(pid)
-    return [{"submission_id": a.id, "state": a.state, "created_at": a.created_at,
+    return [{"submission_id": a.id, "state": a.state, "created_at": a.created_at, "file_hash": a.file_hash,
              "score": a.result["score"] if a.result else None,
              "max_score": a.result["max_score"] if a.result else None}
             for a in server.db.attempts(who.student, pid)]

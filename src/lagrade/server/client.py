@@ -6,6 +6,8 @@ so a student's install needs neither. The report is the one a local check prints
 
 from __future__ import annotations
 
+import hashlib
+import http.client
 import json
 import time
 import urllib.error
@@ -19,6 +21,11 @@ POLL_SECONDS = 600
 
 class ClientError(RuntimeError):
     """One line for the student: what went wrong talking to the server, and what to do."""
+
+
+class _CutOff(ClientError):
+    """The connection ended after the request was sent, before the answer came: the server may have
+    stored the attempt (it stores before it grades) and crashed, or a proxy cut the line."""
 
 
 def _request(url: str, token: str | None, data: bytes | None = None, kind: str | None = None) -> tuple[int, dict]:
@@ -37,7 +44,12 @@ def _request(url: str, token: str | None, data: bytes | None = None, kind: str |
         except (ValueError, AttributeError):
             detail = exc.reason
         raise ClientError(f"the server answered {exc.code}: {detail}") from None
-    except (urllib.error.URLError, OSError) as exc:
+    except urllib.error.URLError as exc:
+        raise ClientError(f"cannot reach the server at {url} ({exc.reason}); check --server") from None
+    except (ConnectionError, http.client.HTTPException, TimeoutError) as exc:
+        raise _CutOff(f"the connection to {url} was cut before the server answered ({exc or type(exc).__name__})") \
+            from None
+    except OSError as exc:
         reason = getattr(exc, "reason", exc)
         raise ClientError(f"cannot reach the server at {url} ({reason}); check --server") from None
     except ValueError:
@@ -59,7 +71,14 @@ def remote_check(server: str, token: str | None, problem_id: str, answer: Path) 
     body = (f"--{boundary}\r\nContent-Disposition: form-data; name=\"file\"; filename=\"answer{answer.suffix}\"\r\n"
             f"Content-Type: application/octet-stream\r\n\r\n").encode() + data + f"\r\n--{boundary}--\r\n".encode()
     url = f"{base}/api/v1/problems/{urllib.parse.quote(problem_id, safe='')}/check"
-    status, out = _request(url, token, body, f"multipart/form-data; boundary={boundary}")
+    try:
+        status, out = _request(url, token, body, f"multipart/form-data; boundary={boundary}")
+    except _CutOff as exc:
+        # the server stores an attempt before it grades it: find this file among the attempts
+        sid = _stored(base, token, problem_id, hashlib.sha256(data).hexdigest())
+        if sid is None:
+            raise ClientError(f"{exc}, and the server holds no attempt with this file; send it again") from None
+        status, out = 202, {"submission_id": sid}
     deadline = time.monotonic() + POLL_SECONDS
     while status == 202 and time.monotonic() < deadline:  # stored and queued: ask again
         time.sleep(1.0)
@@ -67,6 +86,16 @@ def remote_check(server: str, token: str | None, problem_id: str, answer: Path) 
     if status == 202:
         raise ClientError(f"submission {out.get('submission_id')} is stored but not graded yet; ask again later")
     return out
+
+
+def _stored(base: str, token: str | None, problem_id: str, sha256: str) -> int | None:
+    """The id of the newest attempt at ``problem_id`` holding exactly this file, if the server stored one."""
+    try:
+        status, attempts = _request(f"{base}/api/v1/problems/{urllib.parse.quote(problem_id, safe='')}/submissions",
+                                    token)
+    except ClientError:
+        return None
+    return next((a["submission_id"] for a in attempts or [] if a.get("file_hash") == sha256), None)
 
 
 def result_of(out: dict):
