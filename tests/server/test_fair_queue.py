@@ -100,3 +100,22 @@ def _graded(client, headers, sid: int, seconds: float):
         if r.status_code != 202 or time.monotonic() > end:
             return r
         time.sleep(0.1)
+
+
+def test_checks_sent_at_once_are_counted_before_they_are_stored(quiet_app):
+    """Ten checks at once all passed the in-flight cap: none was queued yet when the next was admitted."""
+    import concurrent.futures
+
+    app, client = quiet_app
+    _queue(app, in_flight=3)
+    alice = bearer(app, "alice")
+
+    def send(i):
+        return client.post("/api/v1/problems/12.14/check", headers=alice,
+                           files={"file": ("answer.py", LOOP + b"#%d" % i)}).status_code
+
+    with concurrent.futures.ThreadPoolExecutor(10) as pool:
+        codes = sorted(pool.map(send, range(10)))
+    assert codes == [202] * 3 + [429] * 7
+    q = app.state.server.queue
+    assert sum(q._admitted.values()) == 0 and len(q._owner) == 3

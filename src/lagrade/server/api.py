@@ -105,12 +105,20 @@ async def submit(server, who, pid: str, suffix: str, data: bytes, plot: bool = F
     (the same file again is the same attempt, with or without its picture as it was first graded)."""
     from lagrade.bulk.layout import file_hash
 
-    server.limit(who)
-    sid, new = await asyncio.to_thread(
-        server.db.submit, student=who.student, problem=pid, suffix=suffix, data=data, file_hash=file_hash(data),
-        grading_hash=server.plan.keys[pid], version=server.plan.version)
-    if new and server.queue is not None:
-        server.queue.put(sid, who.student, plot)
+    server.limit(who)  # admitted by the queue: counted as in flight until queued or settled
+    try:
+        sid, new = await asyncio.to_thread(
+            server.db.submit, student=who.student, problem=pid, suffix=suffix, data=data, file_hash=file_hash(data),
+            grading_hash=server.plan.keys[pid], version=server.plan.version)
+    except BaseException:
+        if server.queue is not None:
+            server.queue.settle(who.student)
+        raise
+    if server.queue is not None:
+        if new:
+            server.queue.put(sid, who.student, plot)
+        else:
+            server.queue.settle(who.student)
     att = await server.queue.wait(sid, server.config.wait_seconds) if server.queue is not None else None
     if att is None or not att.graded:
         return JSONResponse({"submission_id": sid, "state": "queued",

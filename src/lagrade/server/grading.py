@@ -153,6 +153,7 @@ class GradingQueue:
         self._owner: dict[int, str] = {}  # queued or grading attempt -> student
         self._grading: dict[int, float] = {}  # attempt -> when its grading started
         self._used: dict[str, deque[tuple[float, float]]] = defaultdict(deque)  # (when done, grader seconds)
+        self._admitted: dict[str, int] = defaultdict(int)  # admitted checks not yet queued (being stored)
         self._plots: set[int] = set()  # attempts whose picture was asked for (the page's)
         self._lock = threading.Lock()
         self._waiters: dict[int, list[tuple[asyncio.AbstractEventLoop, asyncio.Future]]] = {}
@@ -175,6 +176,7 @@ class GradingQueue:
         """Queue a stored attempt of ``student``; ``plot``: also draw the picture of a wrong motion (it
         costs 3-5 times the grading of a file, so only the page, which shows it, asks for it)."""
         with self._lock:
+            self._settle(student)
             if sid not in self._owner:
                 self._owner[sid] = student
                 if student not in self._jobs:
@@ -185,22 +187,33 @@ class GradingQueue:
                 self._plots.add(sid)
         os.write(self._wake_w, b"x")
 
+    def _settle(self, student: str) -> None:
+        """An admitted check is queued, or turned out not new (under the lock)."""
+        if self._admitted.get(student):
+            self._admitted[student] -= 1
+
+    def settle(self, student: str) -> None:
+        """An admitted check that is not queued after all (the same file again, or a failure)."""
+        with self._lock:
+            self._settle(student)
+
     def pending(self) -> int:
         with self._lock:
             return sum(len(q) for q in self._jobs.values())
 
     def admit(self, student: str) -> tuple[float, str] | None:
-        """None if ``student`` may send another attempt now; else (seconds to wait, why): their
-        attempts queued or grading, or the grader seconds their attempts used in the last minute
-        (those grading count with the time they have run so far)."""
+        """None if ``student`` may send another attempt now (it is counted as theirs until
+        :meth:`put` or :meth:`settle`); else (seconds to wait, why): their attempts queued or
+        grading, or the grader seconds their attempts used in the last minute (those grading count
+        with the time they have run so far)."""
         now = time.monotonic()
         with self._lock:
             mine = [sid for sid, who in self._owner.items() if who == student]
-            if len(mine) >= self.in_flight:
+            if len(mine) + self._admitted.get(student, 0) >= self.in_flight:
                 # a file runs for at most cpu_seconds: by then the oldest of theirs is graded
                 running = [now - self._grading[sid] for sid in mine if sid in self._grading]
                 wait = max(1.0, self.plan.assignment.limits.cpu_seconds - max(running, default=0.0))
-                return wait, (f"you have {len(mine)} checks waiting or being graded (at most {self.in_flight} "
+                return wait, (f"you have {self.in_flight} checks waiting or being graded (at most {self.in_flight} "
                               "at once); wait for their grades")
             used = self._used[student]
             while used and now - used[0][0] >= 60:
@@ -216,6 +229,7 @@ class GradingQueue:
                         break
                 return max(1.0, wait), (f"your checks used {spent:.0f} s of grading time in the last minute (at "
                                         f"most {self.seconds_per_minute:g} s a student)")
+            self._admitted[student] += 1
         return None
 
     async def wait(self, sid: int, timeout: float) -> Attempt | None:
