@@ -2,20 +2,33 @@
 
     python benchmarks/serve_load.py                       # 200 students, arrivals spread over 60 s
     python benchmarks/serve_load.py --spread 0            # all 200 at once
-    python benchmarks/serve_load.py --students 50 --workers 2 --deadline 300
+    python benchmarks/serve_load.py --hostile 0           # no hostile answer (the ordinary p95 to compare with)
+    python benchmarks/serve_load.py --mix light           # hostile answers that cost nothing (the jail refuses them)
+    python benchmarks/serve_load.py --probe-only          # the head-of-line probe alone
 
 Starts ``lagrade serve`` (a fresh database in a temporary folder, tokens required), issues a token
 per student, and has each student submit one 12.14 answer by upload: right (the reference solution,
 the golden right files), wrong (the golden wrong files), broken (a syntax error, an empty file) and
-hostile (imports os, opens a file, walks ``__subclasses__``), in proportions 40/30/15/15. Each
-request waits for its grade (a 202 is polled until graded). Bounded: ``--students`` submissions,
-and everything still unanswered at ``--deadline`` seconds counts as an error.
+hostile, in proportions 40/30/15/``--hostile`` (15). The hostile answers of ``--mix costly`` (the
+default) really cost grader time: an infinite loop, a memory bomb (both spend the answer's CPU and
+memory bounds in the jail), a power bomb (``((3*g*l1)^2)^2...`` thirty squarings, as text and as
+``Pow(..., 2**30, evaluate=False)`` in answer.py: built by the reader in the grader itself) and a
+4000-term sum; ``--mix light`` are the old ones (imports os, opens a file, walks
+``__subclasses__``), refused by the jail at no cost; ``--mix bounded`` the costly ones but the
+power bombs (whose cost is the reader's, bounded by another change). Each request waits for its grade (a 202, or
+a 429 of the fair queue, is asked again). Bounded: ``--students`` submissions, and everything
+still unanswered at ``--deadline`` seconds counts as an error.
 
-Prints p50 / p95 / max latency (send to grade received), throughput (grades per second over the
-run), the CPU time the server process and its graders used during the run (where a burst's time
-goes; benchmarks/serve_profile.py splits a submission into its stages), errors (anything but a
-grade), and lost: attempts a student was given an id for that are not graded in the database when
-the run ends, plus submissions the database does not hold at all.
+Then (unless ``--no-probe``) the head-of-line probe, on the same server once the load is over: one
+student sends ten infinite loops at once, then another student sends the right answer; it prints
+how long that right answer took, and how many of the loops the server took (the rest get 429).
+
+Prints p50 / p95 / max latency (send to grade received) of all answers and of the ordinary ones
+(all but the hostile), throughput (grades per second over the run), the CPU time the server
+process and its graders used during the run (where a burst's time goes; benchmarks/serve_profile.py
+splits a submission into its stages), errors (anything but a grade), lost (attempts a student was
+given an id for that are not graded in the database when the run ends, plus submissions the
+database does not hold at all) and graded twice (a file with more than one line in the grade log).
 """
 
 from __future__ import annotations
@@ -41,18 +54,31 @@ REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "tests" / "answers" / "12.14"
 
 
-def answers() -> dict[str, list[tuple[str, bytes]]]:
+LOOP = b"while True:\n    pass\n"
+POWER_TEXT = ("L = \"" + "(" * 30 + "3*g*l1" + ")^2" * 30 + "\"\n").encode()
+POWER_PY = (b"from lagrade.answer import *\nfrom sympy import Pow\nm1, m2, l1, l2, g = parameters('m1 m2 l1 l2 g')\n"
+            b"L = Pow(3*g*l1, 2**30, evaluate=False)\n")
+SUM_4000 = (b"from lagrade.answer import *\nm1, m2, l1, l2, g = parameters('m1 m2 l1 l2 g')\n"
+            b"theta1, theta2 = coordinates('theta1 theta2')\n"
+            b"L = sum(cos(k*theta1)*m1*g*l1/k for k in range(1, 4001))\n")
+MEMORY = b"chunks = []\nwhile True:\n    chunks.append(bytearray(50_000_000))\n"
+COSTLY = [("answer.py", LOOP), ("answer.py", MEMORY), ("answer.toml", POWER_TEXT), ("answer.py", POWER_PY),
+          ("answer.py", SUM_4000)]
+
+
+def answers(mix: str = "costly") -> dict[str, list[tuple[str, bytes]]]:
     right = [("answer.py", (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes())]
     right += [(f"answer{p.suffix}", p.read_bytes()) for p in sorted(GOLDEN.glob("correct_*"))]
     wrong = [(f"answer{p.suffix}", p.read_bytes()) for p in sorted(GOLDEN.glob("wrong_*"))]
     broken = [("answer.py", b"from sympy import *\nL = (m1*\n"), ("answer.py", b""), ("answer.toml", b'L = "m1*\n')]
     hostile = [("answer.py", b"import os\nos.system('true')\nL = 1\n"), ("answer.py", b"L = open('/etc/passwd').read()\n"),
                ("answer.py", b"x = ().__class__.__bases__[0].__subclasses__()\nL = len(x)\n")]
-    return {"right": right, "wrong": wrong, "broken": broken, "hostile": hostile}
+    costly = {"costly": COSTLY, "bounded": [c for c in COSTLY if c[1] not in (POWER_TEXT, POWER_PY)]}
+    return {"right": right, "wrong": wrong, "broken": broken, "hostile": costly.get(mix, hostile)}
 
 
-def pick(rng: random.Random, pool: dict, i: int) -> tuple[str, str, bytes]:
-    kind = rng.choices(["right", "wrong", "broken", "hostile"], weights=[40, 30, 15, 15])[0]
+def pick(rng: random.Random, pool: dict, i: int, hostile: float) -> tuple[str, str, bytes]:
+    kind = rng.choices(["right", "wrong", "broken", "hostile"], weights=[40, 30, 15, hostile])[0]
     name, data = rng.choice(pool[kind])
     # each student's own file (a comment, in .py and .toml alike): no two attempts share their content
     return kind, name, data + f"\n# student {i}\n".encode()
@@ -95,8 +121,12 @@ async def student(client, base, token, kind, name, data, start_at, t0, deadline,
     sent = time.monotonic()
     sid = None
     try:
-        r = await client.post(f"{base}/api/v1/problems/12.14/check", headers=h, files={"file": (name, data)},
-                              timeout=max(1.0, t0 + deadline - time.monotonic()))
+        while True:
+            r = await client.post(f"{base}/api/v1/problems/12.14/check", headers=h, files={"file": (name, data)},
+                                  timeout=max(1.0, t0 + deadline - time.monotonic()))
+            if r.status_code != 429 or time.monotonic() > t0 + deadline:
+                break
+            await asyncio.sleep(float(r.headers.get("retry-after", "1")))
         body = r.json()
         sid = body.get("submission_id")
         while r.status_code == 202 and time.monotonic() < t0 + deadline:
@@ -111,10 +141,11 @@ async def student(client, base, token, kind, name, data, start_at, t0, deadline,
                     "error": f"{type(exc).__name__}: {exc}"})
 
 
-async def run(base: str, tokens: list[str], spread: float, deadline: float, seed: int) -> list[dict]:
+async def run(base: str, tokens: list[str], spread: float, deadline: float, seed: int, mix: str,
+              hostile: float) -> list[dict]:
     rng = random.Random(seed)
-    pool = answers()
-    jobs = [(tokens[i], *pick(rng, pool, i), rng.uniform(0, spread)) for i in range(len(tokens))]
+    pool = answers(mix)
+    jobs = [(tokens[i], *pick(rng, pool, i, hostile), rng.uniform(0, spread)) for i in range(len(tokens))]
     out: list[dict] = []
     limits = httpx.Limits(max_connections=len(tokens), max_keepalive_connections=len(tokens))
     async with httpx.AsyncClient(limits=limits) as client:
@@ -124,6 +155,24 @@ async def run(base: str, tokens: list[str], spread: float, deadline: float, seed
     return out
 
 
+async def probe(base: str, looper: str, other: str, deadline: float = 120.0) -> dict:
+    """The head-of-line probe: ten infinite loops from one student at once, then another's right answer."""
+    right = (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes() + b"\n# the probe\n"
+    async with httpx.AsyncClient() as client:
+        url = f"{base}/api/v1/problems/12.14/check"
+        h = {"Authorization": f"Bearer {looper}"}
+        loops = [asyncio.create_task(client.post(url, headers=h, files={"file": ("answer.py", LOOP + b"#%d" % i)},
+                                                 timeout=deadline)) for i in range(10)]
+        await asyncio.sleep(1.0)  # all ten are in
+        out: list = []
+        t0 = time.monotonic()
+        await student(client, base, other, "right", "answer.py", right, 0.0, t0, deadline, out)
+        codes = [r.status_code for r in await asyncio.gather(*loops, return_exceptions=True)
+                 if isinstance(r, httpx.Response)]
+    return {"seconds": out[0]["seconds"], "ok": out[0]["ok"], "error": out[0]["error"],
+            "taken": sum(c in (200, 202) for c in codes), "refused": sum(c == 429 for c in codes)}
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--students", type=int, default=200)
@@ -131,16 +180,27 @@ def main() -> None:
     ap.add_argument("--workers", type=int, default=2, help="grader processes of the server")
     ap.add_argument("--deadline", type=float, default=600.0, help="seconds after which the run stops waiting")
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--mix", choices=["costly", "bounded", "light"], default="costly",
+                    help="what the hostile answers are (bounded: the costly ones but the power bombs)")
+    ap.add_argument("--hostile", type=float, default=15.0, help="share of hostile answers, in %% (right 40, wrong 30, "
+                                                                  "broken 15)")
+    ap.add_argument("--no-probe", action="store_true", help="skip the head-of-line probe")
+    ap.add_argument("--probe-only", action="store_true", help="only the head-of-line probe")
     args = ap.parse_args()
+    if args.probe_only:
+        args.students = 0
 
     work = Path(tempfile.mkdtemp(prefix="lagrade-serve-load-"))
     (work / "hw.toml").write_text('name = "load"\n[[problems]]\nid = "12.14"\n', encoding="utf-8")
     db = work / "serve.sqlite"
     roster = work / "roster.csv"
-    roster.write_text("student\n" + "".join(f"s{i:03d}\n" for i in range(args.students)), encoding="utf-8")
+    roster.write_text("student\n" + "".join(f"s{i:03d}\n" for i in range(args.students)) + "looper\nprober\n",
+                      encoding="utf-8")
     tokens_csv = subprocess.run([sys.executable, "-m", "lagrade", "tokens", str(roster), "--db", str(db)],
                                 check=True, capture_output=True, text=True).stdout
-    tokens = [line.split(",")[1] for line in tokens_csv.splitlines()[1:] if not line.startswith("@")]
+    issued = dict(line.split(",")[:2] for line in tokens_csv.splitlines()[1:] if not line.startswith("@"))
+    looper, prober = issued.pop("looper"), issued.pop("prober")
+    tokens = list(issued.values())
     port = free_port()
     with open(work / "serve.log", "wb") as log:  # the server keeps its own descriptor
         server = subprocess.Popen([sys.executable, "-m", "lagrade", "serve", "--assignment", str(work / "hw.toml"),
@@ -162,9 +222,11 @@ def main() -> None:
         time.sleep(float(os.environ.get("LAGRADE_LOAD_WARMUP", "15")))  # let the graders warm up first
         cpu0 = cpu_seconds(server.pid)
         t0 = time.monotonic()
-        results = asyncio.run(run(base, tokens, args.spread, args.deadline, args.seed))
+        results = asyncio.run(run(base, tokens, args.spread, args.deadline, args.seed, args.mix, args.hostile)) \
+            if tokens else []
         wall = time.monotonic() - t0
         cpu1 = cpu_seconds(server.pid)
+        probed = None if args.no_probe else asyncio.run(probe(base, looper, prober))
     finally:
         server.send_signal(signal.SIGINT)
         try:
@@ -175,27 +237,38 @@ def main() -> None:
     con = sqlite3.connect(db)
     states = dict(con.execute("SELECT id, state FROM server_submissions").fetchall())
     graded_seconds = con.execute("SELECT sum(seconds) FROM submissions").fetchone()[0] or 0.0
+    twice = con.execute("SELECT count(*) FROM (SELECT 1 FROM grade_log GROUP BY student, problem, file_hash, "
+                        "grading_hash, grader_version HAVING count(*) > 1)").fetchone()[0]
     con.close()
     shutil.rmtree(work, ignore_errors=True)
     given = [r["sid"] for r in results if r["sid"] is not None]
     lost = sum(1 for sid in given if states.get(sid) != "graded") + (len(results) - len(given))
     ok = sorted(r["seconds"] for r in results if r["ok"])
+    ordinary = sorted(r["seconds"] for r in results if r["ok"] and r["kind"] != "hostile")
     errors = [r for r in results if not r["ok"]]
     q = statistics.quantiles(ok, n=100) if len(ok) >= 2 else [float("nan")] * 99
+    qo = statistics.quantiles(ordinary, n=100) if len(ordinary) >= 2 else [float("nan")] * 99
     print(f"students {args.students}, arrivals over {args.spread:g} s, {args.workers} grader processes, "
-          f"{os.cpu_count()} cores")
+          f"{os.cpu_count()} cores, hostile {args.hostile:g} % ({args.mix})")
     by_kind = {}
     for r in results:
         by_kind.setdefault(r["kind"], []).append(r["seconds"])
     print("  kinds: " + ", ".join(f"{k} {len(v)}" for k, v in sorted(by_kind.items())))
     print(f"  latency p50 {q[49]:.2f} s, p95 {q[94]:.2f} s, max {max(ok, default=float('nan')):.2f} s")
+    print(f"  ordinary answers (not hostile): p50 {qo[49]:.2f} s, p95 {qo[94]:.2f} s, "
+          f"max {max(ordinary, default=float('nan')):.2f} s")
     print(f"  throughput {len(ok) / wall:.2f} grades/s over {wall:.1f} s")
     print(f"  grading time in the graders: {graded_seconds:.1f} s in all ({graded_seconds / max(1, len(ok)):.3f} s a file)")
     n = max(1, len(results))
     print(f"  CPU during the run: server process {cpu1[0] - cpu0[0]:.1f} s ({(cpu1[0] - cpu0[0]) / n * 1e3:.0f} ms a "
           f"submission), graders and answers {cpu1[1] - cpu0[1]:.1f} s ({(cpu1[1] - cpu0[1]) / n * 1e3:.0f} ms a "
           f"submission), on {os.cpu_count()} cores in {wall:.1f} s")
-    print(f"  errors {len(errors)}, lost {lost}")
+    print(f"  errors {len(errors)}, lost {lost}, graded twice {twice}")
+    if probed is not None:
+        print(f"  head-of-line probe: the right answer behind another student's ten infinite loops "
+              f"{'graded' if probed['ok'] else 'NOT graded'} in {probed['seconds']:.2f} s "
+              f"(loops taken {probed['taken']}, refused with 429 {probed['refused']})"
+              + (f"; {probed['error']}" if probed["error"] else ""))
     for r in errors[:5]:
         print(f"    {r['kind']}: {r['error']}")
 
