@@ -45,6 +45,7 @@ def make_config(tmp: Path, **kw) -> ServerConfig:
         path.write_text(ASSIGNMENT, encoding="utf-8")
     kw.setdefault("db", str(tmp / "serve.sqlite"))
     kw.setdefault("workers", 1)
+    kw.setdefault("spare_graders", 0)  # each warms up for seconds: only the tests that need them
     return ServerConfig(assignment=path, **kw)
 
 

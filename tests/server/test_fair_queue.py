@@ -92,6 +92,32 @@ def test_a_right_answer_is_graded_within_5_s_behind_another_students_ten_loops(t
         assert waited < 5, f"bob's right answer waited {waited:.1f} s behind alice's loops"
 
 
+@pytest.mark.slow
+def test_a_spare_grader_takes_a_right_answer_while_two_students_loops_hold_the_others(tmp_path):
+    """Different students' slow attempts (each its own student: the per-student cap does not help)
+    hold both graders; once they have run past ``slow_after``, a spare grader takes the next one."""
+    config = make_config(tmp_path, workers=2, spare_graders=1, slow_after=1.0, wait_seconds=0.2)
+    app = create_app(config)
+    right = (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes()
+    with TestClient(app) as client:
+        carol = bearer(app, "carol")
+        for i in range(3):  # warm: each grader has graded once (bounded)
+            _graded(client, carol, client.post("/api/v1/problems/12.14/check", headers=carol, files={
+                "file": ("answer.py", right + b"# warm %d" % i)}).json()["submission_id"], 120)
+        for who in ("alice", "dave"):
+            assert client.post("/api/v1/problems/12.14/check", headers=bearer(app, who),
+                               files={"file": ("answer.py", LOOP)}).status_code == 202
+        time.sleep(0.5)
+        bob = bearer(app, "bob")
+        sent = time.monotonic()
+        sid = client.post("/api/v1/problems/12.14/check", headers=bob,
+                          files={"file": ("answer.py", right)}).json()["submission_id"]
+        r = _graded(client, bob, sid, 30)
+        waited = time.monotonic() - sent
+        assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
+        assert waited < 5, f"bob's right answer waited {waited:.1f} s behind two loops"
+
+
 def _graded(client, headers, sid: int, seconds: float):
     """The attempt's response once graded, or the last one after ``seconds``."""
     end = time.monotonic() + seconds

@@ -32,6 +32,10 @@ class ServerConfig(BaseModel):
     #: attempts may use in a minute (beyond either: 429 with Retry-After)
     student_in_flight: int = Field(3, ge=1)
     student_grader_seconds_per_minute: float = Field(30, gt=0)
+    #: warm graders beyond `workers` that take fresh attempts while others are held by slow ones
+    #: (an attempt that has run longer than `slow_after` seconds)
+    spare_graders: int = Field(4, ge=0)
+    slow_after: float = Field(2.0, gt=0)
     previews_per_minute: float = Field(90, gt=0)
     preview_burst: int = Field(30, ge=1)
     #: wall-clock seconds one preview may take in the preview process (then it is killed and restarted)

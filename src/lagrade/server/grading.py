@@ -138,14 +138,18 @@ class GradingQueue:
     """A thread that owns ``workers`` warm grader processes and grades stored attempts in order."""
 
     def __init__(self, db: Database, p: Plan, workers: int, scheduler: str | None = None,
-                 problems: dict | None = None, in_flight: int = 3, seconds_per_minute: float = 30.0) -> None:
+                 problems: dict | None = None, in_flight: int = 3, seconds_per_minute: float = 30.0,
+                 spares: int = 0, slow_after: float = 2.0) -> None:
         """``scheduler``: grade on this Dask cluster (``tcp://host:8786``) as ``lagrade grade --scheduler``
         does (a warm grader process per Dask worker thread), instead of ``workers`` local processes.
         ``in_flight``, ``seconds_per_minute``: what one student may have queued or grading at once,
-        and the grader seconds their attempts may use in a minute (:meth:`admit`)."""
+        and the grader seconds their attempts may use in a minute (:meth:`admit`). ``spares``: warm
+        graders beyond ``workers`` that take fresh attempts while others are held by attempts that
+        have run longer than ``slow_after`` seconds (local graders only)."""
         self.db, self.plan, self.workers, self.scheduler = db, p, workers, scheduler
         self.problems = problems or {}
         self.in_flight, self.seconds_per_minute = in_flight, seconds_per_minute
+        self.spares, self.slow_after = spares, slow_after
         #: graders one student's attempts may hold at once: never all of them (with one grader, that one)
         self.per_student = max(1, workers - 1)
         self._jobs: dict[str, deque[int]] = {}  # queued attempts, per student, in order
@@ -343,18 +347,26 @@ class GradingQueue:
             loop.call_soon_threadsafe(_resolve, fut)
 
     def _run(self) -> None:
+        """``workers`` graders for fresh attempts; an attempt that runs longer than ``slow_after``
+        (an infinite loop spending its CPU bound, a memory bomb, a huge sum) stops counting against
+        them, and a spare grader takes the next attempt meanwhile: a few slow attempts share the CPU
+        with the quick ones (which take tens of milliseconds) instead of holding them up."""
         sources = self.plan.sources
-        graders = [GraderProcess(sources) for _ in range(self.workers)]
+        graders = [GraderProcess(sources) for _ in range(self.workers + self.spares)]
         try:
             while not self._stopping:
+                now = time.monotonic()
                 for g in graders:
+                    quick = sum(1 for h in graders if h.job is not None and now - h.started <= self.slow_after)
+                    if quick >= self.workers:
+                        break
                     if g.job is None:
                         job = self._next()
                         if job is None:
                             break
                         g.submit(job)
                 busy = [g for g in graders if g.job is not None]
-                ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=1.0)
+                ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=0.25 if self.spares else 1.0)
                 if self._wake_r in ready:
                     os.read(self._wake_r, 4096)
                 look_after(graders, sources, ready, time.monotonic(), self._done, self._next)
