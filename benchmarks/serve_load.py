@@ -178,6 +178,7 @@ def main() -> None:
     ap.add_argument("--students", type=int, default=200)
     ap.add_argument("--spread", type=float, default=60.0, help="seconds over which students arrive (0: all at once)")
     ap.add_argument("--workers", type=int, default=2, help="grader processes of the server")
+    ap.add_argument("--spares", type=int, help="spare graders of the server (lagrade serve --spare-graders)")
     ap.add_argument("--deadline", type=float, default=600.0, help="seconds after which the run stops waiting")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--mix", choices=["costly", "bounded", "light"], default="costly",
@@ -205,7 +206,8 @@ def main() -> None:
     with open(work / "serve.log", "wb") as log:  # the server keeps its own descriptor
         server = subprocess.Popen([sys.executable, "-m", "lagrade", "serve", "--assignment", str(work / "hw.toml"),
                                    "--db", str(db), "--roster", str(roster), "--port", str(port),
-                                   "--workers", str(args.workers)],
+                                   "--workers", str(args.workers)]
+                                  + ([] if args.spares is None else ["--spare-graders", str(args.spares)]),
                                   stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
     base = f"http://127.0.0.1:{port}"
     try:
@@ -249,7 +251,8 @@ def main() -> None:
     q = statistics.quantiles(ok, n=100) if len(ok) >= 2 else [float("nan")] * 99
     qo = statistics.quantiles(ordinary, n=100) if len(ordinary) >= 2 else [float("nan")] * 99
     print(f"students {args.students}, arrivals over {args.spread:g} s, {args.workers} grader processes, "
-          f"{os.cpu_count()} cores, hostile {args.hostile:g} % ({args.mix})")
+          f"{'' if args.spares is None else f'{args.spares} spare, '}{os.cpu_count()} cores, "
+          f"hostile {args.hostile:g} % ({args.mix})")
     by_kind = {}
     for r in results:
         by_kind.setdefault(r["kind"], []).append(r["seconds"])

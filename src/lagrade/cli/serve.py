@@ -45,12 +45,15 @@ def _roster(path: Path | None) -> tuple[str, ...] | None:
 @click.option("--port", default=8000, show_default=True, type=click.IntRange(0, 65535))
 @click.option("--open", "open_", is_flag=True, help="No tokens: anyone who reaches the server may check (a lecture demo).")
 @click.option("--workers", "-j", type=click.IntRange(min=1), default=2, show_default=True, help="Warm grader processes.")
+@click.option("--spare-graders", type=click.IntRange(min=0), default=4, show_default=True,
+              help="Warm graders that take fresh checks while others run slow ones (longer than 2 s).")
 @click.option("--scheduler", help="Grade on an existing Dask cluster instead (tcp://host:8786; needs lagrade[dask]).")
 @click.option("--unsafe-trusted-files", is_flag=True,
               help="Serve even where the OS jail cannot be built (see `lagrade doctor`): never for students.")
 @problems_option
 def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str, port: int, open_: bool,
-          workers: int, scheduler: str | None, unsafe_trusted_files: bool, problems_dir: tuple[Path, ...]) -> None:
+          workers: int, spare_graders: int, scheduler: str | None, unsafe_trusted_files: bool,
+          problems_dir: tuple[Path, ...]) -> None:
     """Serve the assignment: students check answers on a web page or with `lagrade check --server`."""
     _need_server_extra()
     import uvicorn
@@ -66,7 +69,8 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     _require_jail(unsafe_trusted_files, err)
     db = db or str(assignment_path.with_name(assignment_path.stem + "-serve.sqlite"))
     config = ServerConfig(assignment=assignment_path, db=db, roster=_roster(roster), open=open_,
-                          problems_dirs=problems_dir, workers=workers, scheduler=scheduler)
+                          problems_dirs=problems_dir, workers=workers, scheduler=scheduler,
+                          spare_graders=spare_graders)
     try:
         app = create_app(config)
     except NotAServerDatabase as exc:

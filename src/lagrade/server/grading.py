@@ -135,7 +135,8 @@ def _for_student(result: dict[str, Any], problem: str, suffix: str, data: bytes)
 
 
 class GradingQueue:
-    """A thread that owns ``workers`` warm grader processes and grades stored attempts in order."""
+    """A thread that owns ``workers`` (and ``spares``) warm grader processes and grades stored attempts,
+    each student in turn."""
 
     def __init__(self, db: Database, p: Plan, workers: int, scheduler: str | None = None,
                  problems: dict | None = None, in_flight: int = 3, seconds_per_minute: float = 30.0,
