@@ -13,7 +13,6 @@ import os
 import signal
 import threading
 import traceback
-import warnings
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -152,7 +151,7 @@ def _check(ctx: Context, part, value, gauge: bool = False) -> tuple[PartResult, 
     try:
         return (GAUGE_CHECKERS if gauge else CHECKERS)[part.kind](ctx, part, value), True
     except InvalidAnswer as exc:
-        return _unusable(part, "invalid", _with_momenta(ctx, part, str(exc))), True
+        return _unusable(part, "invalid", str(exc)), True
     except SceneError:
         raise
     except Exception:  # noqa: BLE001  (a grader bug must not sink the other parts)
@@ -161,15 +160,6 @@ def _check(ctx: Context, part, value, gauge: bool = False) -> tuple[PartResult, 
         # an ``error``, never ``invalid``: the answer was readable. The traceback (whose messages may
         # quote reference expressions) is for instructors only, never in what a student is shown
         return _unusable(part, "error", ENGINE_ERROR, detail=traceback.format_exc(limit=-8)), False
-
-
-def _with_momenta(ctx: Context, part, message: str) -> str:
-    """An unknown-name message of a part written in momenta lists them too (12.43's H: p_theta)."""
-    if part.kind not in ("hamiltonian", "hamilton_eqs") or "the problem's names are " not in message:
-        return message
-    momenta = [f"p_{c.name}" for c in ctx.problem.system(part.system).coordinates]
-    missing = [p for p in momenta if p not in message.split("the problem's names are ", 1)[1].split(", ")]
-    return f"{message}, and the momenta {', '.join(missing)}" if missing else message
 
 
 def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "default",
@@ -191,10 +181,7 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
     parts: list[PartResult] = []
     used = Formulations(ctx, answer)
     try:
-        with cpu_time_bound(grading_seconds), warnings.catch_warnings():
-            # numpy's warnings about the engine's own NaNs (an all-NaN row of a sampled Jacobian, 12.46) are
-            # handled where they arise: not for the student's terminal
-            warnings.filterwarnings("ignore", category=RuntimeWarning, module=r"lagrade\.")
+        with cpu_time_bound(grading_seconds):
             for part in asked:
                 parts.append(_ungradable(part, answer) or used.grade(part, answer.values[part.name], read_as, memo))
     except GradingOutOfTime as exc:

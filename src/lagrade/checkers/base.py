@@ -199,7 +199,8 @@ def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates:
         if s.name not in allowed:
             hint = suggest(s.name, allowed)
             public = sorted({*params, *part.symbols, *mech.all_names}) + ["t"] + \
-                [f"{f.name}({', '.join(f.args)})" for f in mech.system.functions]
+                [f"{f.name}({', '.join(f.args)})" for f in mech.system.functions] + \
+                ([f"p_{n}" for n in coords] if momenta else [])
             raise InvalidAnswer(f"unknown name '{s.name}' in {part.name}{hint}; the problem's names are "
                                 f"{', '.join(public)}")
     if part.kind in RESULT_KINDS and not part.accelerations:

@@ -131,7 +131,12 @@ def analyse_rows(rows: CompiledRows, argv: Sequence[np.ndarray], truth: np.ndarr
         empty = bool(np.all(jnorm <= 1e-12 * scale[i]))
         consistent.append(ok)
         trivial.append(ok and empty)
-        weight = np.nanmedian(jnorm * (1.0 + np.abs(truth)), axis=1) if J.shape[2] else np.zeros(rows.n)
+        weighted = jnorm * (1.0 + np.abs(truth))
+        # an unknown whose entries are NaN at every state (a singular row) weighs nothing, without numpy's warning
+        counted = np.isfinite(weighted).any(axis=1)
+        weight = np.zeros(rows.n)
+        if J.shape[2] and counted.any():
+            weight[counted] = np.nanmedian(weighted[counted], axis=1)
         main.append(labels[int(np.nanargmax(weight))] if np.isfinite(weight).any() and weight.max() > 0 else "none")
     use = [i for i in range(rows.m) if consistent[i] and not trivial[i]]
     if use:
