@@ -6,6 +6,9 @@
 (b) L = m l^2 theta'^2/2 + m g l cos(theta), p_theta = m l^2 theta', H = p_theta^2/(2 m l^2) - m g l cos(theta).
     theta' = p_theta/(m l^2), p_theta' = -m g l sin(theta)  ->  theta'' = -(g/l) sin(theta);
     small amplitudes: theta'' = -(g/l) theta, from rest at theta0: theta = theta0 cos(sqrt(g/l) t).
+    Exactly (motion_b, from rest at theta0 = 2 with l = 1, g = 9.81) the motion is Jacobi's
+    sin(theta/2) = k sn(K(k^2) - sqrt(g/l) t | k^2), k = sin(theta0/2); here Hamilton's equations are
+    integrated by classical Runge-Kutta (1000 steps per 0.1 s; an answer file imports sympy and math only).
 """
 from sympy import Eq, Function, cos, sin, sqrt, symbols
 
@@ -34,3 +37,27 @@ hamilton_b = [
     Eq(p_theta.diff(t), -m * g * l * sin(theta)),
 ]
 solution_b = {"theta": theta0 * cos(sqrt(g / l) * t)}
+
+import math
+
+
+def _rates(q, p):
+    return p, -9.81 * math.sin(q)       # theta' = p/(m l^2), p' = -m g l sin(theta), m = l = 1
+
+
+def _pendulum(q, p, h, steps):
+    for _ in range(steps):
+        k1 = _rates(q, p)
+        k2 = _rates(q + h / 2 * k1[0], p + h / 2 * k1[1])
+        k3 = _rates(q + h / 2 * k2[0], p + h / 2 * k2[1])
+        k4 = _rates(q + h * k3[0], p + h * k3[1])
+        q += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+        p += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+    return q, p
+
+
+_state, _table = (2.0, 0.0), [2.0]
+for _ in range(40):
+    _state = _pendulum(*_state, 1e-4, 1000)
+    _table.append(_state[0])
+motion_b = {"t": [i / 10 for i in range(41)], "theta": _table}

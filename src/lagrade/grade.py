@@ -234,6 +234,8 @@ class Formulations:
         self.ctx, self.answer = ctx, answer
         #: part name -> the system key its answer was right in (None: right in none, or not given)
         self.chosen: dict[str, str | None] = {}
+        #: id of a formulation that earns part of the credit only (an approximation) -> (share, formulation)
+        self.credit: dict[int, tuple[float, object]] = {}
 
     def variants(self, part) -> list[tuple[object, str, bool]]:
         """The part as graded in each formulation it may be judged in, primary first, each with the words
@@ -249,7 +251,10 @@ class Formulations:
             if alt.initial is not None:
                 update["initial"] = alt.initial
             words = alt.says or ("" if alt.gauge else self._words(system, ""))
-            forms.append((part.model_copy(update=update), words, alt.gauge))
+            form = part.model_copy(update=update)
+            if alt.credit < 1:
+                self.credit[id(form)] = (alt.credit, form)  # the form too: its id stays its own while kept
+            forms.append((form, words, alt.gauge))
         if part.follows is None:
             return forms
         system = self._chosen(part.follows)
@@ -301,21 +306,36 @@ class Formulations:
     def _first_right(self, forms, value, follows: str | None) -> tuple[PartResult, bool, str | None]:
         """The verdict in the first formulation the value is right in; else the primary's, or, when the
         primary cannot even read it (names of another formulation), the first formulation that can."""
-        fallback, own_all = None, True
+        fallback, own_all, approximate = None, True, None
         for form, words, gauge in forms:
             graded_part, own = _check(self.ctx, form, value, gauge)
             own_all = own_all and own
+            share = self.credit.get(id(form), (1.0, None))[0]
+            if graded_part.verdict == "correct" and share < 1:  # right only as an approximation: a share
+                if approximate is None:
+                    approximate = _approximation(graded_part, share, words)
+                continue
             if words and follows:  # one formulation, the followed part's: say which, right or wrong
                 graded_part.feedback += f" Judged for the formulation of your {follows}: {words}."
             elif words and graded_part.verdict == "correct":
                 graded_part.feedback += f" You used this formulation: {words}."
             if graded_part.verdict == "correct":
                 return graded_part, own_all, self.GAUGE if gauge else form.system
+            if approximate is not None:
+                continue
             if fallback is None or (fallback.verdict == "invalid" and graded_part.verdict != "invalid"):
                 if fallback is not None and words:
                     graded_part.feedback += f" (Read in this formulation: {words}.)"
                 fallback = graded_part
-        return fallback, own_all, None
+        return approximate or fallback, own_all, None
+
+
+def _approximation(graded_part: PartResult, share: float, words: str) -> PartResult:
+    """Right only under an approximation the question does not make: that share, and why not all."""
+    out = graded_part.model_copy()
+    out.verdict, out.score, out.method = "partial", round(out.max_score * share, 6), graded_part.method
+    out.feedback = f"Partly right: your answer is right for {words}, an approximation the question does not make."
+    return out
 
 
 def _echo(graded_part: PartResult, value, read_as: tuple[str, ...]) -> PartResult:

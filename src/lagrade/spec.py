@@ -302,6 +302,9 @@ class Alternative(_Strict):
                                                   "each with its sentence")
     gauge: bool = Field(False, description="hamiltonian, hamilton_eqs: accept the H (or Hamilton's equations) of any "
                                            "Lagrangian L + dF(q, t)/dt of the system, whose momenta are shifted by dF/dq")
+    credit: float = Field(1.0, gt=0, le=1, description="the share of the part an answer right only in this "
+                                                       "formulation earns: below 1 for an approximation the question "
+                                                       "does not make (small amplitudes), said in the feedback")
 
 
 class Part(_Strict):
