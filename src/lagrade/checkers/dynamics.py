@@ -236,9 +236,10 @@ def _confirm(ctx: Context, prove: Callable[[], bool | None], trajectory: Callabl
 
 def _decide(ctx: Context, part: Part, proof: bool | None, traj: Comparison | None, note: str = "") -> PartResult:
     """Agreement at every sampled state (within the preset's ``sample_rtol``) already holds when this
-    is called. A proof settles it; otherwise the trajectories do: motions that separate beyond the
-    preset's tolerance refute the answer (a constant off by 1e-7 passes every sampled state but not
-    a strict trajectory), and evidence that could not decide is flagged for an instructor's review."""
+    is called, for an answer the acceptance rule (`admit`) lets sampling decide: exact simple numbers,
+    no switch. A proof settles it; otherwise the trajectories do: motions that separate beyond the
+    preset's tolerance refute the answer (an error below ``sample_rtol`` at every state that grows along
+    the motion), and evidence that could not decide is flagged for an instructor's review."""
     extra = f" {note}" if note else ""
     if proof:
         admit.proved()

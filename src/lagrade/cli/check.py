@@ -19,7 +19,7 @@ from lagrade.cli.common import fail, leave, problems_option
 @click.argument("answer", type=click.Path(path_type=Path))
 @click.option("--json", "as_json", is_flag=True, help="Print exactly one JSON object.")
 @click.option("--accuracy", type=click.Choice(["fast", "default", "strict"]), default="default",
-              show_default=True, help="Tolerances of the trajectory comparison.")
+              show_default=True, help="Tolerances of the sampled states (sample_rtol) and of the trajectory comparison.")
 @click.option("--part", "only", multiple=True, help="Grade only these parts.")
 @click.option("--hints", is_flag=True, help="More specific feedback: which term is missing or extra.")
 @click.option("--credit", "credit_file", type=click.Path(exists=True, path_type=Path),

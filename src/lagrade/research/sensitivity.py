@@ -4,8 +4,9 @@ Run by ``python benchmarks/sensitivity.py`` (the table of docs/numerics.md) and 
 tests/stability/test_sensitivity.py.
 
 For every part of kind lagrangian, eom (not linearized), hamiltonian and hamilton_eqs, the derived
-reference is written as an answer.toml with one parameter p replaced by (1 + eps)*p, and graded
-under fast, default and strict. For each part and preset, the smallest eps in 1e-3 ... 1e-9 that is
+reference is written as an answer.toml with one parameter p replaced by (1 + eps)*p, eps an exact
+fraction 1/10**k (a float would be refused outright as an inexact number: docs/answers.md), and graded
+under fast, default and strict. For each part and preset, the smallest eps in 1e-3 ... 1e-6 that is
 rejected (not full marks) for every parameter that matters is reported (found by bisection: a
 larger error is assumed caught when a smaller one is). A parameter whose 10 % change is accepted
 does not matter to that part (it cancels) and is left out. "-" means even 1e-3 passed.
@@ -25,7 +26,9 @@ import lagrade
 from lagrade.grade import references
 from lagrade.library import load_problem
 
-EPS = [10.0 ** -k for k in range(3, 10)]
+#: down to 1e-6: a finer exact fraction (1 + 1/10**7) has a denominator above 10**6 and is refused by the
+#: numbers rule whatever the preset (checkers/admit.py), so the sampled evidence is measured above it
+EPS = [10.0 ** -k for k in range(3, 7)]
 PRESETS = ("fast", "default", "strict")
 KINDS = ("lagrangian", "eom", "hamiltonian", "hamilton_eqs")
 
@@ -53,12 +56,20 @@ def _write(path: Path, name: str, rows: list[sp.Expr], single: bool) -> None:
     path.write_text(f'{name} = "{texts[0]}"\n' if single else f"{name} = [" + ", ".join(f'"{t}"' for t in texts) + "]\n")
 
 
+#: the evidence that rejected the last answer graded by `rejected` (what `scan` reports per part)
+LAST: dict[str, str] = {}
+
+
 def rejected(pid: str, name: str, rows, single: bool, param, eps: float, accuracy: str, folder: Path) -> bool:
-    scaled = [r.xreplace({param: (1 + sp.Float(eps, 17)) * param}) for r in rows]
+    factor = 1 + sp.Rational(1, round(1 / eps)) if eps else sp.S.One
+    scaled = [r.xreplace({param: factor * param}) for r in rows]
     path = folder / "answer.toml"
     _write(path, name, scaled, single)
     result = lagrade.check(pid, path, accuracy=accuracy)
-    return next(p for p in result.parts if p.part == name).verdict != "correct"
+    part = next(p for p in result.parts if p.part == name)
+    LAST["evidence"] = ("the numbers rule" if "cannot be accepted" in part.feedback
+                        else "trajectories" if part.method == "trajectory" else "sampled states")
+    return part.verdict != "correct"
 
 
 def smallest_rejected(*args) -> float | None:
@@ -97,14 +108,18 @@ def scan(ids: list[str]):
                 t0 = time.perf_counter()
                 # parameters that matter: a 10 % change is rejected under the loosest preset
                 params = [p for p in params if rejected(pid, part.name, ref, single, p, 0.1, "fast", folder)]
-                out = {}
+                out, by = {}, {}
                 for accuracy in PRESETS:
-                    worst = 0.0
+                    worst, evidence = 0.0, set()
                     for p in params:
                         e = smallest_rejected(pid, part.name, ref, single, p, accuracy, folder)
+                        if e is not None:  # what rejected it at that eps (and below: the same or the rule)
+                            rejected(pid, part.name, ref, single, p, e, accuracy, folder)
+                            evidence.add(LAST["evidence"])
                         worst = max(worst, e if e is not None else float("inf"))
                     out[accuracy] = worst if params else None
-                rows.append((pid, part.name, part.kind, [str(p) for p in params], out, time.perf_counter() - t0))
+                    by[accuracy] = evidence
+                rows.append((pid, part.name, part.kind, [str(p) for p in params], out, time.perf_counter() - t0, by))
                 print(f"{pid:>7} {part.name:<14} " + "  ".join(f"{a} {fmt(out[a]):>6}" for a in PRESETS)
                       + f"   ({len(params)} parameters, {time.perf_counter() - t0:.1f} s)", flush=True)
     return rows
@@ -124,4 +139,8 @@ def markdown(rows) -> str:
         n = sum(counts.values())
         spread = ", ".join(f"{k}: {counts[k]}" for k in [*(fmt(e) for e in EPS), "-"] if counts[k])
         lines.append(f"| {accuracy} | {n} | {spread} |")
+    lines += ["", "| preset | the smallest rejected eps was decided by (parts) |", "|---|---|"]
+    for accuracy in PRESETS:
+        evidence = collections.Counter(e for r in rows if r[4][accuracy] is not None for e in r[6][accuracy])
+        lines.append(f"| {accuracy} | " + ", ".join(f"{k}: {v}" for k, v in sorted(evidence.items())) + " |")
     return "\n".join(lines)
