@@ -661,11 +661,6 @@ def test_meaning_can_fail(tmp_path):
 #: parts are either asked by the book (their values transcribed from the catalogue's results, in
 #: tests/catalogue/) or `extra = true` (issue 33). The line goes when the problem scores full marks.
 NOT_YET_FULL: dict[str, str] = {
-    "12.9": "centrifugal/coriolis ask the generalized forces (terms of Lagrange's equations); the catalogue's "
-            "results give the spherical (physical) components, which differ by the factors r and r*sin(theta): "
-            "accept both (alternatives) or record the difference as an erratum",
-    "12.30": "eom_xy: the catalogue gives the Cartesian equations only with their multiplier lamc, not the "
-             "constraint-eliminated form the part asks",
     "12.50": "solution: the book asks it, the catalogue gives no value (NO_VALUE: no closed form)",
 }
 

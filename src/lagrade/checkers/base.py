@@ -129,7 +129,7 @@ def read_expr(value: object, part: Part, mech: Mechanics, *, plain_coordinates: 
 
 
 #: names students give Lagrange multipliers (lam, lambda_1, mu2 ...), when not a name of the problem
-MULTIPLIER_NAME = re.compile(r"^(lam|lamda|lambda|mu|nu)(_?[0-9]+|_[A-Za-z][A-Za-z0-9]*)?$")
+MULTIPLIER_NAME = re.compile(r"^(lam|lamda|lambda|mu|nu)(_?[0-9]+|_[A-Za-z][A-Za-z0-9]*|[a-z])?$")
 
 
 def multiplier_names(expr: sp.Basic, mech: Mechanics, part: Part) -> set[str]:

