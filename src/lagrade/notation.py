@@ -34,15 +34,21 @@ from typing import Any
 
 import sympy as sp
 
-MAX_TEXT_CHARS = 1_000_000
-MAX_NODES = 300_000
-MAX_DEPTH = 100
-MAX_INT_ABS = 10**60
-MAX_TOTAL_INT_DIGITS = 200_000
-MAX_POWER_DIGITS = 10_000
-MAX_NAME_CHARS = 64
-MAX_FLOAT_PRECISION = 10_000
-MAX_DERIVATIVE_ORDER = 100
+from lagrade.limits import (  # every bound in one place; re-exported: the readers import them from here
+    MAX_DEPTH,
+    MAX_DERIVATIVE_ORDER,
+    MAX_EXPANDED_TERMS,
+    MAX_EXPONENT,
+    MAX_FLOAT_PRECISION,
+    MAX_INT_ABS,
+    MAX_NAME_CHARS,
+    MAX_NODES,
+    MAX_POWER_DIGITS,
+    MAX_TEXT_CHARS,
+    MAX_TOTAL_INT_DIGITS,
+)
+
+_LOG10_2 = math.log10(2)
 
 
 class RebuildError(ValueError):
@@ -54,29 +60,99 @@ class RebuildError(ValueError):
 def check_int(value: int) -> None:
     """Refuse integers beyond the size any mechanics answer needs."""
     if abs(value) > MAX_INT_ABS:
-        raise RebuildError("integer too large (more than 60 digits)")
+        raise RebuildError(f"integer too large (more than {len(str(MAX_INT_ABS)) - 1} digits)")
 
 
 def check_power(base: Any, exp: Any) -> None:
-    """Refuse exact numeric powers whose result would be huge, before sympy computes them."""
-    if not (isinstance(exp, sp.Rational) or isinstance(exp, int)):
+    """Refuse an exact power whose result would be huge, before sympy builds it.
+
+    Whatever the base: sympy raises every exact number in it (``(3*g*x)**n`` holds ``3**n``) and
+    multiplies nested exponents (``(x**a)**b`` is ``x**(a*b)``), so the size is estimated from the
+    base's tree (:func:`_exact_size`) and the exponent, and nothing is computed."""
+    if isinstance(exp, bool) or not isinstance(exp, (int, sp.Rational)):
         return  # symbolic or Float exponent: sympy leaves it alone or uses floating point
     exp = sp.Rational(exp)
-    if isinstance(base, int):
-        base = sp.Integer(base)
-    if not isinstance(base, sp.Basic) or not base.is_number or isinstance(base, sp.Float):
-        return
+    if isinstance(base, bool) or not isinstance(base, (int, sp.Basic)) or isinstance(base, sp.Float):
+        return  # a Float to a power is a Float
+    base = sp.Integer(base) if isinstance(base, int) else base
     if abs(exp.q) > MAX_POWER_DIGITS:
-        raise RebuildError("exponent denominator too large")
-    if isinstance(base, sp.Rational):
-        size = max(abs(base.p), abs(base.q))
-        if size <= 1:
-            return
-        digits = abs(exp.p) * (size.bit_length() * math.log10(2))
-        if digits > MAX_POWER_DIGITS:
-            raise RebuildError(f"number too large: a power with about {digits:.3g} digits")
-    elif abs(exp.p) > MAX_POWER_DIGITS:  # e.g. (1 + I)**n is expanded exactly by sympy
-        raise RebuildError("exponent too large for an exact numeric power")
+        raise RebuildError(f"exponent denominator too large (more than {MAX_POWER_DIGITS} digits)")
+    digits, exponent = _exact_size(base)
+    n = abs(exp.p)
+    if not isinstance(base, sp.Rational) and exponent * n > MAX_EXPONENT:
+        raise RebuildError(f"exponent too large: a power to the {_about(exponent * n)} "
+                           f"(nested powers multiply their exponents; limit {MAX_EXPONENT})")
+    if digits * n > MAX_POWER_DIGITS:
+        raise RebuildError(f"number too large: a power with about {_about(digits * n)} digits "
+                           f"(limit {MAX_POWER_DIGITS})")
+
+
+def _about(n: float) -> str:
+    return f"{n:.3g}" if n >= 1e6 else f"{n:g}"
+
+
+@lru_cache(maxsize=4096)
+def _exact_size(e: Any) -> tuple[float, int]:
+    """(the digits of the largest exact number in ``e``, the largest exact exponent in ``e``, nested
+    powers multiplied): an upper bound on what raising ``e`` to a power multiplies. Memoized by
+    subexpression, so that building a tree measures each of its nodes once."""
+    if isinstance(e, sp.Rational):
+        size = max(abs(e.p), abs(e.q))
+        return (size.bit_length() * _LOG10_2 if size > 1 else 0.0), 1
+    digits, exponent = 0.0, 1
+    for arg in getattr(e, "args", ()):
+        d, x = _exact_size(arg)
+        digits, exponent = max(digits, d), max(exponent, x)
+    if isinstance(e, sp.Pow) and isinstance(e.exp, sp.Rational):
+        exponent = _exact_size(e.base)[1] * max(abs(e.exp.p), 1)
+    return digits, exponent
+
+
+def check_expansion(value: Any) -> None:
+    """Refuse a value with a subexpression that multiplies out (``sympy.expand``, which the engine
+    calls) to more than ``MAX_EXPANDED_TERMS`` terms; built values only (they are cheap to build)."""
+    for e in expressions_in(value):
+        terms = _expanded_terms(e)[1]
+        if terms > MAX_EXPANDED_TERMS:
+            raise RebuildError(f"expression too large: multiplied out it has about {_about(terms)} terms "
+                               f"(limit {MAX_EXPANDED_TERMS})")
+
+
+def expressions_in(value: Any):
+    """The sympy objects in a value (lists, tuples and dicts, keys too, taken apart)."""
+    if isinstance(value, sp.Basic):
+        yield value
+    elif isinstance(value, (list, tuple)):
+        for item in value:
+            yield from expressions_in(item)
+    elif isinstance(value, dict):
+        for key, item in value.items():
+            yield from expressions_in(key)
+            yield from expressions_in(item)
+
+
+@lru_cache(maxsize=4096)
+def _expanded_terms(e: Any) -> tuple[float, float]:
+    """(terms of ``e`` multiplied out, the most terms any subexpression of ``e`` multiplies out to):
+    upper bounds, as floats (they may be astronomical). A sum's terms add, a product's multiply, a
+    power of k terms to the n has C(n + k - 1, n) (one term, a quotient, for a negative n)."""
+    parts = [_expanded_terms(a) for a in e.args if isinstance(a, sp.Basic)]
+    widest = max((w for _, w in parts), default=1.0)
+    top = 1.0
+    if isinstance(e, sp.Add):
+        top = math.fsum(t for t, _ in parts)
+    elif isinstance(e, sp.Mul):
+        top = math.prod(t for t, _ in parts)
+    elif isinstance(e, sp.Pow) and isinstance(e.exp, sp.Rational) and parts:
+        k, n = parts[0][0], int(abs(e.exp.p) // e.exp.q)
+        if n <= 1 or k <= 1 or math.isinf(k):
+            powered = k if n >= 1 else 1.0
+        else:
+            log = math.lgamma(n + k) - math.lgamma(n + 1) - math.lgamma(k)
+            powered = math.exp(log) if log < 700 else math.inf
+        widest = max(widest, powered)
+        top = powered if e.exp > 0 else 1.0
+    return top, max(top, widest)
 
 
 def check_name(name: Any, what: str = "name") -> str:
@@ -98,8 +174,10 @@ def parse_limited(text: str, what: str = "expression") -> ast.AST:
         tree = ast.parse(text, mode="eval")
     except SyntaxError as exc:
         raise RebuildError(f"{what} is not well formed: {exc.msg}") from None
-    except (ValueError, RecursionError, MemoryError) as exc:
-        raise RebuildError(f"{what} cannot be parsed: {type(exc).__name__}: {exc}") from None
+    except (RecursionError, MemoryError):  # Python's parser: operators nested beyond its own stack
+        raise RebuildError(f"{what} nested too deeply (more than {MAX_DEPTH} levels)") from None
+    except ValueError as exc:
+        raise RebuildError(f"{what} cannot be parsed: {exc}") from None
     count = 0
     digits = 0
     for node in ast.walk(tree):
