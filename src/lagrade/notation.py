@@ -226,6 +226,7 @@ _FUNCTIONS: dict[str, Any] = {
                  "acosh atanh exp log sqrt cbrt Abs sign").split()
 }
 _SPECIAL_FUNCTIONS = {"Derivative", "diff", "Eq", "Rational"}
+_CHAINED = (ast.Add, ast.Sub, ast.Mult, ast.Div)
 _FIRST = ("_d", "_dot", "dot")
 _SECOND = ("_dd", "_ddot", "ddot")
 
@@ -329,17 +330,11 @@ class _Reader:
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
             value = self.expr(node.operand, d)
             return -value if isinstance(node.op, ast.USub) else value
+        if isinstance(node, ast.BinOp) and isinstance(node.op, _CHAINED):
+            return self.chain(node, d)
         if isinstance(node, ast.BinOp):
             left, right = self.expr(node.left, d), self.expr(node.right, d)
             op = node.op
-            if isinstance(op, ast.Add):
-                return left + right
-            if isinstance(op, ast.Sub):
-                return left - right
-            if isinstance(op, ast.Mult):
-                return left * right
-            if isinstance(op, ast.Div):
-                return left / right
             if isinstance(op, (ast.Pow, ast.BitXor)):
                 check_power(left, right)
                 return left**right
@@ -355,6 +350,21 @@ class _Reader:
         if isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
             raise TextAnswerError("comprehensions are not allowed in a text answer")
         raise TextAnswerError(f"'{ast.unparse(node)[:40]}' is not a supported formula")
+
+    def chain(self, node: ast.BinOp, depth: int) -> Any:
+        """``a + b - c + ...`` (or ``a * b / c * ...``): Python's tree nests a sum to the left, one level
+        a term; it is read as one level, so that a long sum is not "nested too deeply", and built at
+        once (adding term by term would copy the sum each time)."""
+        kind = (ast.Add, ast.Sub) if isinstance(node.op, (ast.Add, ast.Sub)) else (ast.Mult, ast.Div)
+        right: list[tuple[ast.operator, ast.AST]] = []
+        while isinstance(node, ast.BinOp) and isinstance(node.op, kind):
+            right.append((node.op, node.right))
+            node = node.left
+        items = [self.expr(node, depth)]
+        for op, operand in reversed(right):
+            value = self.expr(operand, depth)
+            items.append(-value if isinstance(op, ast.Sub) else 1 / value if isinstance(op, ast.Div) else value)
+        return sp.Add(*items) if kind[0] is ast.Add else sp.Mul(*items)
 
     def name(self, name: str) -> Any:
         if name.startswith("__"):
