@@ -21,6 +21,7 @@ from typing import Any
 import sympy as sp
 
 from lagrade.jail.screen import AnswerProblem
+from lagrade.limits import MAX_LATEX_FILE_CHARS, MAX_TOML_BYTES, MAX_TOML_DEPTH
 from lagrade.notation import YES_NO, TextAnswerError, parse_math  # noqa: F401  (re-exported: answers read with it)
 
 
@@ -35,14 +36,22 @@ def load_toml_answer(path: Path, coordinates: Sequence[str], known_names: Iterab
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         return {}, [AnswerProblem(file=fname, line=None, message=f"cannot read the file: {exc}")]
-    if len(text) > 200_000:
-        return {}, [AnswerProblem(file=fname, line=None, message="the file is larger than 200 kB")]
+    if len(text) > MAX_TOML_BYTES:
+        return {}, [AnswerProblem(file=fname, line=None,
+                                  message=f"the file is larger than {MAX_TOML_BYTES // 1000} kB")]
+    too_deep = [AnswerProblem(file=fname, line=None,
+                              message=f"arrays or tables nested more than {MAX_TOML_DEPTH} levels deep; "
+                                      f"an answer needs 2 (a list or a table in the file)")]
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         m = re.search(r"line (\d+)", str(exc))
         return {}, [AnswerProblem(file=fname, line=int(m.group(1)) if m else None,
                                   message=f"not valid TOML: {exc}")]
+    except RecursionError:  # Python's TOML parser recurses once a level: far beyond MAX_TOML_DEPTH
+        return {}, too_deep
+    if _depth(data) > MAX_TOML_DEPTH:
+        return {}, too_deep
     latex_chars = sum(len(v) for v in _strings(data) if _looks_latex(v))
     if latex_chars > MAX_LATEX_CHARS:  # sympy's LaTeX parser takes about 2 ms per character
         return {}, [AnswerProblem(file=fname, line=None,
@@ -60,7 +69,20 @@ def load_toml_answer(path: Path, coordinates: Sequence[str], known_names: Iterab
     return values, problems
 
 
-MAX_LATEX_CHARS = 8000
+MAX_LATEX_CHARS = MAX_LATEX_FILE_CHARS  # the name this module has always given it
+
+
+def _depth(raw: Any) -> int:
+    """Levels of arrays and tables in a parsed TOML document (the document itself is one), counted
+    to one past ``MAX_TOML_DEPTH`` at most."""
+    level, layer = 0, [raw]
+    while level <= MAX_TOML_DEPTH:
+        containers = [v for v in layer if isinstance(v, (list, dict))]
+        if not containers:
+            break
+        level += 1
+        layer = [item for v in containers for item in (v.values() if isinstance(v, dict) else v)]
+    return level
 
 
 def _strings(raw: Any):
