@@ -20,7 +20,8 @@ from typing import TYPE_CHECKING
 
 # only what a check needs before the answer's child starts: the engine (checkers, comparison,
 # derivation) is imported by `check` while the child runs, so this module loads in sympy's time
-from lagrade.reading.load import LoadedAnswer, start_loading
+from lagrade.jail.screen import AnswerProblem
+from lagrade.reading.load import LoadedAnswer, refusal, start_loading
 from lagrade.credit import Credit
 from lagrade.library import SceneFileError, load_problem, scene_message
 from lagrade.result import CheckResult, PartResult
@@ -406,7 +407,11 @@ def check(problem: str | Path | Problem, answer: str | Path | None = None, *, pr
             target = version_for(prob, name, value, taken=set(given))
             if target is not None:
                 given[target], routed[target] = value, name
-    finish = start_loading(path, prob, limits) if path is not None else LoadedAnswer
+    if grading_seconds is None:
+        grading_seconds = default_grading_seconds()
+    # this process's own work on the answer (its text parsed, its child's values rebuilt) is bounded as grading is
+    finish = start_loading(path, prob, limits, bound=lambda: cpu_time_bound(grading_seconds)) if path is not None \
+        else LoadedAnswer
     try:  # meanwhile, on the other core: the engine and the references
         for module in ENGINE:
             importlib.import_module(module)
@@ -421,11 +426,19 @@ def check(problem: str | Path | Problem, answer: str | Path | None = None, *, pr
     except BaseException:
         finish()  # any other failure (or an interrupt) still collects the child and closes its pipes
         raise
-    loaded = finish()
-    loaded.values.update(given)
+    try:
+        loaded = finish()
+    except GradingOutOfTime:  # the reading, like the grading, within the CPU bound: then every part is invalid
+        stopped = AnswerProblem(file=path.name, line=None, message=f"reading this answer took longer than "
+                                f"{grading_seconds:g} s of CPU time (the expressions are too large)")
+        loaded = LoadedAnswer(problems=[stopped], fatal=stopped)
+    for name, value in given.items():
+        reason = refusal(value, prob.part(name).kind)
+        if reason is None:
+            loaded.values[name] = value
+        else:
+            loaded.part_problems[name] = AnswerProblem(file=name, line=None, message=reason)
     loaded.routed.update(routed)
-    if grading_seconds is None:
-        grading_seconds = default_grading_seconds()
     try:
         return grade_values(prob, loaded, accuracy, only, hints=hints, credit=credit, read_as=read_as,
                             grading_seconds=grading_seconds)

@@ -8,8 +8,11 @@ to the problem's part names, and a list of one-line problems naming the file and
 from __future__ import annotations
 
 from collections.abc import Callable
+from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, field
 from pathlib import Path
+
+import sympy as sp
 
 from lagrade.jail.rebuild import RebuildError, decode_value
 from lagrade.jail.screen import AnswerProblem
@@ -50,20 +53,31 @@ def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
     return start_loading(path, problem, limits)()
 
 
-def start_loading(path: Path, problem: Problem, limits=None) -> Callable[[], LoadedAnswer]:
+def start_loading(path: Path, problem: Problem, limits=None,
+                  bound: Callable[[], AbstractContextManager] = nullcontext) -> Callable[[], LoadedAnswer]:
     """Start reading an answer; the returned function finishes it. An ``answer.py`` runs in its
-    sandbox child meanwhile, so the caller can do other work (``lagrade check`` imports the grader)."""
+    sandbox child meanwhile, so the caller can do other work (``lagrade check`` imports the grader).
+    ``bound``: what this process's own work on the answer (reading the text, rebuilding the child's
+    values) runs in: `lagrade.grade.check` bounds it by CPU time as it bounds grading."""
     names = answer_names(problem)
     if not path.is_file():
         missing = AnswerProblem(file=str(path), line=None, message="no such answer file")
         return lambda: LoadedAnswer(problems=[missing], fatal=missing)
     if path.suffix == ".toml":
-        return lambda: _load_toml(path, problem, names)
+        def read_toml() -> LoadedAnswer:
+            with bound():
+                return _load_toml(path, problem, names)
+        return read_toml
     if path.suffix == ".py":
         from lagrade.jail.sandbox import SandboxLimits, start_answer_file
 
         running = start_answer_file(path, list(names), limits or SandboxLimits())
-        return lambda: _finish_py(path, problem, names, running.wait())
+
+        def finish_py() -> LoadedAnswer:
+            outcome = running.wait()  # the child is collected first: the bound never cuts into that
+            with bound():
+                return _finish_py(path, problem, names, outcome)
+        return finish_py
     wrong = AnswerProblem(file=str(path), line=None, message="an answer file must be a .py or a .toml file")
     return lambda: LoadedAnswer(problems=[wrong], fatal=wrong)
 
@@ -109,12 +123,19 @@ def _finish_py(path: Path, problem: Problem, names: dict[str, str], outcome) -> 
     out.status, out.stdout = outcome.status, outcome.stdout
     if outcome.status != "ok" and problems:
         out.fatal = problems[0]
+    for prob in outcome.problems:  # what the child would not send ("'L' is an integer too large to grade"):
+        for name in names:         # the part is invalid for it, not missing
+            if prob.message.startswith(f"'{name}' "):
+                out.part_problems.setdefault(names[name], prob)
     raw = {}
     for name, encoded in outcome.values.items():
         try:
             raw[name] = decode_value(encoded)
-        except RebuildError as exc:
-            problems.append(AnswerProblem(file=str(path), line=None, message=f"{name}: {exc}"))
+        except RebuildError as exc:  # the part is invalid for it (not missing): the file did bind it
+            refused = AnswerProblem(file=path.name, line=None, message=f"{name}: {exc}")  # no grader path
+            problems.append(refused)
+            if name in names:
+                out.part_problems.setdefault(names[name], refused)
     return _bind(out, raw, problems, path, problem, names)
 
 
@@ -188,6 +209,12 @@ def _bind_values(out: LoadedAnswer, raw: dict, problems: list, path: Path, probl
             part = names[name]
             if _is_own_symbol(value, name) or is_sympys_own(value, name):
                 continue  # ``lam = symbols("lam")``, sympy's ``Q``: not an answer to the part
+            reason = refusal(value, problem.part(part).kind)
+            if reason is not None:
+                refused = AnswerProblem(file=path.name, line=None, message=f"{name}: {reason}")
+                out.problems.append(refused)
+                out.part_problems.setdefault(part, refused)
+                continue
             if name not in shared:
                 out.values.setdefault(part, value)
         elif path.suffix == ".toml":
@@ -306,3 +333,49 @@ def _is_own_symbol(value: object, name: str) -> bool:
 def _binds(text: str, line: int, name: str) -> bool:
     lines = text.splitlines()
     return 0 < line <= len(lines) and lines[line - 1].split("=", 1)[0].strip() == name
+
+
+#: what no physical quantity is: refused where an answer is read, since the engine has no number for it
+NOT_A_VALUE = {
+    "AccumulationBounds": "AccumBounds (a range of limits) is not a value a physical quantity can take",
+    "DiracDelta": ("DiracDelta is not a value a physical quantity can take (differentiating Max, Min, Abs, "
+                   "sign or Heaviside makes it)"),
+    "Order": "an order term O(...) is not a value a physical quantity can take; leave it out",
+    "Integral": "an unevaluated Integral cannot be graded; evaluate it (doit()) or write its result",
+}
+#: what the engine differentiates twice (Lagrange's equations) or once (Hamilton's): no function of
+#: the state (of t: coordinates, velocities and momenta are functions of t) whose derivative is a
+#: DiracDelta, or is not defined, may be in it (``Abs(eps)`` of a parameter may)
+DIFFERENTIATED = ("lagrangian", "hamiltonian")
+NOT_SMOOTH = frozenset("Abs sign Heaviside Max Min floor ceiling".split())
+#: the kinds whose value may be a Matrix as a whole: a column of equations (`checkers.base.equation_rows`)
+EQUATION_LISTS = ("eom", "hamilton_eqs", "reduced")
+_TIME = sp.Symbol("t")
+
+
+def refusal(value: object, kind: str) -> str | None:
+    """Why ``value`` cannot be graded as a part of ``kind`` (one sentence), or None: a value no
+    physical quantity takes, a function the engine cannot differentiate in what it differentiates,
+    or an expression that multiplies out to more terms than the limit (``lagrade.limits``)."""
+    from lagrade.notation import check_expansion, expressions_in
+
+    if isinstance(value, sp.MatrixBase) and kind in EQUATION_LISTS:
+        value = list(value)  # a column of equations: the checkers take its rows
+    for expr in expressions_in(value):
+        for node in sp.preorder_traversal(expr):
+            name = type(node).__name__
+            if name in NOT_A_VALUE:
+                return NOT_A_VALUE[name]
+            if isinstance(node, sp.MatrixBase):
+                return (f"a Matrix cannot be graded as {kind.replace('_', ' ')}"
+                        + ("; give the rows as a list" if kind in EQUATION_LISTS else
+                           "; give an expression (or a list or a dict of them, as the problem asks)"))
+            if kind in DIFFERENTIATED and name in NOT_SMOOTH and _TIME in node.free_symbols:  # of the state
+                return (f"{name} is not differentiable everywhere, and a {kind.capitalize()} is differentiated "
+                        f"to give the equations of motion; write it for the case at hand, without {name}")
+    try:
+        check_expansion(value)
+    except RebuildError as exc:
+        return str(exc)
+    return None
+
