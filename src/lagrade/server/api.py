@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import asyncio
 from pathlib import Path
+from typing import Annotated
 
 from fastapi import APIRouter, HTTPException, Request
+from fastapi import Path as PathParameter
 from fastapi.responses import JSONResponse, Response
 from pydantic import ValidationError
 
@@ -17,6 +19,11 @@ from lagrade.server.answers import (
 )
 
 router = APIRouter(prefix="/api/v1", tags=["api v1"])
+
+#: the largest id the database can hold (a signed 64-bit integer): a larger one, like any id that is
+#: not a number, is refused with 422 as it is parsed, never handed to the database (which answered 500)
+MAX_ID = 2**63 - 1
+SubmissionId = Annotated[int, PathParameter(ge=1, le=MAX_ID, description="the id a check answered with")]
 
 _CHECK_BODY = {
     "requestBody": {
@@ -141,7 +148,7 @@ async def read_as(pid: str, body: PreviewIn, request: Request) -> dict:
 
 
 @router.get("/submissions/{sid}")
-def submission(sid: int, request: Request) -> JSONResponse:
+def submission(sid: SubmissionId, request: Request) -> JSONResponse:
     """One of your attempts: its grade, or ``queued``."""
     server = _server(request)
     who = server.identify(request)
@@ -156,7 +163,7 @@ def submission(sid: int, request: Request) -> JSONResponse:
 @router.get("/submissions/{sid}/plot.png", response_class=Response,
             responses={200: {"content": {"image/png": {}}, "description": "the picture"},
                        404: {"description": "no such attempt of yours, or no picture"}})
-def plot(sid: int, request: Request) -> Response:
+def plot(sid: SubmissionId, request: Request) -> Response:
     """The picture of an attempt's wrong dynamics parts: your motion against the true one, as
     ``lagrade check --plot`` draws it. A PNG, pixels only: no number of the true motion as text."""
     server = _server(request)

@@ -8,13 +8,14 @@ import secrets
 import tempfile
 from html import escape
 from pathlib import Path
+from typing import Annotated
 
-from fastapi import APIRouter, HTTPException, Request
+from fastapi import APIRouter, HTTPException, Query, Request
 from fastapi.responses import HTMLResponse, RedirectResponse, Response
 from fastapi.templating import Jinja2Templates
 
 from lagrade.server.answers import AnswerTextError, to_toml
-from lagrade.server.api import submit
+from lagrade.server.api import MAX_ID, submit
 from lagrade.server.state import SESSION_COOKIE, TEMPLATES, Who
 from lagrade.server.tokens import issue, student_of
 
@@ -141,7 +142,7 @@ def _problem_context(request: Request, who: Who, pid: str) -> dict:
 
 
 @router.get("/p/{pid}", response_class=HTMLResponse)
-def problem_page(pid: str, request: Request, attempt: int | None = None):
+def problem_page(pid: str, request: Request, attempt: Annotated[int | None, Query(ge=1, le=MAX_ID)] = None):
     server = _server(request)
     who, cookie = _who(request)
     if who is None:
@@ -220,9 +221,13 @@ def class_page(path: str, request: Request):
             write_report(server.db.gradebook(), Path(tmp))
         except Exception as exc:  # noqa: BLE001  (nothing graded yet, a database away)
             return HTMLResponse(f"<p>no class report yet: {escape(str(exc))}</p>", status_code=503)
-        target = (Path(tmp) / (path or "index.html")).resolve()
-        if not target.is_relative_to(Path(tmp).resolve()) or not target.is_file():
-            raise HTTPException(404, f"no page {path!r} in the class report")
+        try:  # a NUL byte or a name too long for the file system is no page either (not a 500)
+            target = (Path(tmp) / (path or "index.html")).resolve()
+            found = target.is_relative_to(Path(tmp).resolve()) and target.is_file()
+        except (ValueError, OSError):
+            found = False
+        if not found:
+            raise HTTPException(404, f"no page {path[:80]!r} in the class report")
         kind = "text/html; charset=utf-8" if target.suffix == ".html" else "application/octet-stream"
         response = Response(target.read_bytes(), media_type=kind)
     response.headers["Content-Security-Policy"] = CSP
