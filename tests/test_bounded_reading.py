@@ -19,6 +19,7 @@ import pytest
 
 from lagrade.limits import (
     MAX_DEPTH,
+    MAX_DERIVATIVE_TERMS,
     MAX_EXPANDED_TERMS,
     MAX_EXPONENT,
     MAX_POWER_DIGITS,
@@ -55,6 +56,9 @@ BOMBS = {
     "product.toml": ('L = "' + "*".join(f"(m1 + {i}*g)" for i in range(1, 31)) + '"\n', {"L": "multiplied out"}),
     "big_integer.py": (HEAD + "L = 10**5000\na = {'m1': 10**5000}\n",
                        {"L": "integer too large", "a": "integer too large"}),
+    "derivative_text.toml": ('L = "diff(sin(x)*cos(y)*z^3*exp(x*y)*m1, t, 40)"\n', {"L": "derivative too large"}),
+    "derivative_py.py": (HEAD + "L = Derivative(sin(x)*cos(y)*z**3*exp(x*y)*m1, (t, 40))\n",
+                         {"L": "derivative too large"}),
     # item 2: nesting
     "unary_chain.toml": ('L = "' + "-" * 100_000 + 'x"\n', {"L": "nested too deeply"}),
     "brackets.toml": ('L = "' + "(" * 5000 + "x" + ")" * 5000 + '"\n', {"L": "nested too deeply"}),  # bounded before too
@@ -110,7 +114,14 @@ def test_a_file_nested_too_deeply_is_unusable_in_one_line(tmp_path, name):
 
 def test_the_bounds_stated_are_the_bounds_applied():
     """Every refusal names the limit it applies, as docs/safety.md states it."""
-    from lagrade.notation import RebuildError, TextAnswerError, check_expansion, check_power, parse_math
+    from lagrade.notation import (
+        RebuildError,
+        TextAnswerError,
+        check_derivative,
+        check_expansion,
+        check_power,
+        parse_math,
+    )
 
     import sympy as sp
 
@@ -125,6 +136,11 @@ def test_the_bounds_stated_are_the_bounds_applied():
     with pytest.raises(RebuildError, match=f"limit {MAX_EXPANDED_TERMS}"):
         check_expansion([sp.Add(*sp.symbols("a:9")) ** 100])
     check_expansion(sp.Add(*sp.symbols("a:3")) ** 100)  # 5151 terms
+    q = sp.Function("q")(sp.Symbol("t"))
+    check_derivative(q, 2)
+    check_derivative(x**2 * sp.sin(x) * sp.exp(x), 5)  # 8 nodes: 8**5 = 32768
+    with pytest.raises(RebuildError, match=f"limit {MAX_DERIVATIVE_TERMS}"):
+        check_derivative(x**2 * sp.sin(x) * sp.exp(x), 6)  # 8**6 = 262144
     with pytest.raises(TextAnswerError, match=f"more than {MAX_DEPTH} levels"):
         parse_math("(" * (MAX_DEPTH + 1) + "x" + ")" * (MAX_DEPTH + 1), ["x"])
 

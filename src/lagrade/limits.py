@@ -33,6 +33,10 @@ MAX_EXPANDED_TERMS = 100_000
 MAX_NAME_CHARS = 64
 MAX_FLOAT_PRECISION = 10_000
 MAX_DERIVATIVE_ORDER = 100
+#: nodes a derivative taken twice or more may be estimated to reach: an expression of n nodes
+#: differentiated k times is taken as n**k (a product's derivative has a term for each factor, each
+#: differentiated again): diff(sin(x)*cos(y)*z^3*exp(x*y)*m, t, 40) was minutes of sympy
+MAX_DERIVATIVE_TERMS = 100_000
 
 # --------------------------------------------------------------------------- reading: answer.toml
 #: bytes of one answer.toml

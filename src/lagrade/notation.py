@@ -37,6 +37,7 @@ import sympy as sp
 from lagrade.limits import (  # every bound in one place; re-exported: the readers import them from here
     MAX_DEPTH,
     MAX_DERIVATIVE_ORDER,
+    MAX_DERIVATIVE_TERMS,
     MAX_EXPANDED_TERMS,
     MAX_EXPONENT,
     MAX_FLOAT_PRECISION,
@@ -116,6 +117,34 @@ def check_expansion(value: Any) -> None:
         if terms > MAX_EXPANDED_TERMS:
             raise RebuildError(f"expression too large: multiplied out it has about {_about(terms)} terms "
                                f"(limit {MAX_EXPANDED_TERMS})")
+
+
+def check_derivative(expr: Any, order: int) -> None:
+    """Refuse differentiating ``expr`` ``order`` times (twice or more) when the result could be huge:
+    an expression of n nodes differentiated k times is estimated at n**k nodes."""
+    if order < 2 or not isinstance(expr, sp.Basic):
+        return
+    size = _tree_size(expr)
+    if order * math.log(size) > math.log(MAX_DERIVATIVE_TERMS):
+        raise RebuildError(f"derivative too large: {order} derivatives of an expression of {size} nodes "
+                           f"(estimated at {size}^{order} nodes; limit {MAX_DERIVATIVE_TERMS})")
+
+
+@lru_cache(maxsize=4096)
+def _tree_size(e: Any) -> int:
+    return 1 + sum(_tree_size(a) for a in e.args if isinstance(a, sp.Basic))
+
+
+def derivative_count(spec: Sequence[Any]) -> int:
+    """How many derivatives ``sympy.diff(expr, *spec)`` takes: ``t``, ``(t, 2)``, or ``t, 2``."""
+    total = 0
+    for i, item in enumerate(spec):
+        if isinstance(item, (tuple, sp.Tuple)) and len(item) == 2:
+            total += int(item[1]) if isinstance(item[1], (int, sp.Integer)) else 1
+        elif not isinstance(item, (int, sp.Integer)):  # a variable, perhaps followed by its count
+            after = spec[i + 1] if i + 1 < len(spec) else None
+            total += int(after) if isinstance(after, (int, sp.Integer)) and not isinstance(after, bool) else 1
+    return total
 
 
 def expressions_in(value: Any):
@@ -463,6 +492,7 @@ class _Reader:
             var = item[0] if isinstance(item, tuple) else item
             if not isinstance(var, (sp.Symbol, sp.Integer)) and not (self.functions and var in self.coords.values()):
                 raise TextAnswerError("differentiate with respect to a symbol such as t")
+        check_derivative(expr, derivative_count(spec))
         return sp.diff(expr, *spec)
 
 

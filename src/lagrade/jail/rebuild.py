@@ -37,9 +37,11 @@ from lagrade.notation import (  # the limits on any untrusted math text, shared 
     MAX_NODES,
     MAX_TOTAL_INT_DIGITS,
     RebuildError,
+    check_derivative,
     check_int,
     check_name,
     check_power,
+    derivative_count,
     parse_limited,
 )
 
@@ -171,6 +173,7 @@ def _derivative(expr: Any, *variables: Any) -> sp.Expr:
         count = v[1] if isinstance(v, (tuple, sp.Tuple)) and len(v) == 2 else 1
         if isinstance(count, (int, sp.Integer)) and not 0 <= int(count) <= MAX_DERIVATIVE_ORDER:
             raise RebuildError(f"derivative order {count} out of range")
+    check_derivative(expr, derivative_count(variables))  # the engine may carry it out
     return sp.Derivative(expr, *variables)
 
 

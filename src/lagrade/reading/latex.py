@@ -35,19 +35,18 @@ from typing import Any
 
 import sympy as sp
 
+from lagrade.limits import MAX_BRACE_DEPTH, MAX_LATEX_CHARS, MAX_REBUILD_DEPTH  # noqa: F401  (re-exported)
 from lagrade.reading import latex_subset
 from lagrade.reading.latex_subset import GREEK
 from lagrade.notation import (
     MAX_DERIVATIVE_ORDER,
     RebuildError,
+    check_derivative,
     check_int,
     check_name,
     check_power,
 )
 
-MAX_LATEX_CHARS = 2000  # sympy's ANTLR parser takes about 2 ms per character
-MAX_BRACE_DEPTH = 40
-MAX_REBUILD_DEPTH = 150
 T = sp.Symbol("t")
 
 FUNCTIONS = set("sin cos tan cot sec csc arcsin arccos arctan arccot arcsec arccsc sinh cosh tanh "
@@ -800,6 +799,7 @@ class _Names:
                 spec.append((var, int(count)))
             if not 0 < total <= MAX_DERIVATIVE_ORDER:
                 raise LatexAnswerError(f"derivative order {total} out of range")
+            check_derivative(expr, total)
             return sp.diff(expr, *spec)
         if isinstance(node, sp.core.function.AppliedUndef):
             return self.applied(node, d)
