@@ -123,7 +123,7 @@ def _finish_py(path: Path, problem: Problem, names: dict[str, str], outcome) -> 
     out.status, out.stdout = outcome.status, outcome.stdout
     if outcome.status != "ok" and problems:
         out.fatal = problems[0]
-    for prob in outcome.problems:  # what the child would not send ("'L' is an integer too large to grade"):
+    for prob in problems:  # what the child would not send ("'L' is an integer too large to grade"):
         for name in names:         # the part is invalid for it, not missing
             if prob.message.startswith(f"'{name}' "):
                 out.part_problems.setdefault(names[name], prob)
