@@ -92,7 +92,6 @@ SUPERSETS: dict[tuple[str, str], str] = {
     ("12.40", "parameter k"): "H2: the concrete central potential graded beside the general V(r)",
     ("12.40", "system S"): "H2: the fixed frame (r, phi), the book's comparison",
     ("12.30", "system xy"): "the book also asks the equations in Cartesian coordinates (eom_xy)",
-    ("12.41", "system b_small"): "the small-angle pendulum whose closed-form trajectory the catalogue gives",
     ("12.5", "system a"): "H1: the catalogue's (a) reading, the total length l also a coordinate (its results)",
     ("12.6", "system a"): "H1: the catalogue's (a), the arc length s as coordinate (its results: Q_s)",
     ("ex12.6", "system b"): "H1: the catalogue's (b), the distance y down the slope (its results)",
@@ -114,6 +113,7 @@ PART_SYSTEMS: dict[tuple[str, str], tuple[str, str]] = {
     ("P12.6", "Q_a"): ("a", "(a) of the problem: the arc length s as coordinate"),
     ("P12.6", "dW_a"): ("a", "(a) of the problem: the arc length s as coordinate"),
     ("P12.40", "hamilton_fixed"): ("S", "the book's 'also in terms of r and theta': the fixed frame"),
+    ("P12.30", "eom_xy"): ("xy", "the catalogue's Cartesian equations (its results, with the multiplier lamc)"),
     ("X12.6", "a"): ("b", "the interpretation: the centre's acceleration down the incline, y'' in (b)'s coordinate"),
     ("P12.46", "eom_reduced"): ("reduced", "the cyclic X eliminated: the reduced (Routh) scene of theta alone"),
 }
@@ -324,7 +324,8 @@ def name_problems(entry: Entry) -> list[str]:
         if name in transcription(entry):
             own = problem.system(part.system)  # a part graded on another system (PART_SYSTEMS) uses its names
             known = params | set(part.symbols) | {f.name for f in getattr(system, "functions", ())} \
-                | {q.name for q in problem.parameters_of(own.key)} | {f.name for f in getattr(own, "functions", ())}
+                | {q.name for q in problem.parameters_of(own.key)} | {f.name for f in getattr(own, "functions", ())} \
+                | {c.multiplier for c in own.constraints if c.multiplier}  # equations may keep their multipliers
             its = sorted(coords | {c.name for c in own.coordinates})
             for used in sorted(_names_in(transcription(entry)[name])):
                 if used not in known and used != "t" and not _state_name(used, its) \

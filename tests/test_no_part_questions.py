@@ -75,10 +75,17 @@ def test_12_9_generalized_forces_are_the_extra_terms_of_lagranges_equations():
             assert sp.simplify(derived - text(ref[key])) == 0, (part, key)
 
 
-def test_12_9_physical_components_are_named_and_not_accepted():
+def test_12_9_physical_components_are_accepted_as_the_catalogue_writes_them():
+    """With (a)'s equations written with F_r, F_theta, F_phi (as the catalogue writes them), the extra terms
+    of (b) are the components along e_r, e_theta, e_phi: an admissible reading, and the feedback says so;
+    a mix of the two normalizations in one answer is neither."""
     v, feedback = verdict("12.9", centrifugal={"r": text("m*omega**2*r*sin(theta)**2"),
                                                "theta": text("m*omega**2*r*sin(theta)*cos(theta)"), "phip": 0})
-    assert v != "correct" and "generalized force" in feedback
+    assert v == "correct" and "e_theta" in feedback, feedback
+    v, _ = verdict("12.9", coriolis={"r": text("2*m*omega*r*sin(theta)**2*phip_d"),
+                                     "theta": text("2*m*omega*r*sin(theta)*cos(theta)*phip_d"),
+                                     "phip": text("-2*m*omega*r*sin(theta)*(r_d*sin(theta) + r*cos(theta)*theta_d)")})
+    assert v != "correct"
 
 
 # ----------------------------------------------------------------------------------------------- 12.46 (b)
