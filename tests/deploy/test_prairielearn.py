@@ -3,9 +3,11 @@ fake /grade tree (right, wrong, broken, hostile, misconfigured), every file chec
 
 from __future__ import annotations
 
+import ast
 import base64
 import json
 import os
+import uuid
 import runpy
 import subprocess
 import sys
@@ -27,9 +29,12 @@ RESULTS_SCHEMA = json.loads((HERE / "prairielearn_results.schema.json").read_tex
 @pytest.fixture(scope="module")
 def built(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("pl") / "grader"
-    res = CliRunner().invoke(prairielearn, ["build", "-o", str(out), "--problem", "12.43"])
+    res = CliRunner().invoke(prairielearn, ["build", "-o", str(out), "--problem", "12.43", "--image", IMAGE])
     assert res.exit_code == 0, res.output
     return out
+
+
+IMAGE = "physics101/lagrade-grader:2026.1"
 
 
 def _question(built: Path) -> Path:
@@ -87,6 +92,116 @@ def test_the_build_folder_and_the_question(built):
     tags.feed((_question(built) / "question.html").read_text())
     assert tags.tags["pl-file-editor"]["file-name"] == data["params"]["lagrade"]["file"]
     assert {"pl-question-panel", "pl-submission-panel", "pl-external-grader-results"} <= set(tags.tags)
+
+
+def _deprecated(value, schema: dict, where: str = "") -> list[str]:
+    """The properties of ``value`` that ``schema`` marks ``"deprecated": true``."""
+    found = []
+    for key, sub in (schema.get("properties") or {}).items():
+        if isinstance(value, dict) and key in value:
+            if sub.get("deprecated"):
+                found.append(f"{where}{key}")
+            found += _deprecated(value[key], sub, f"{where}{key}.")
+    return found
+
+
+def test_info_json_names_the_pushed_image_and_nothing_deprecated(built):
+    """The image is the one given (PrairieLearn pulls it from a public registry), and no field the
+    current PrairieLearn schema marks deprecated (externalGradingOptions.enabled) is written."""
+    info = json.loads((_question(built) / "info.json").read_text())
+    assert info["externalGradingOptions"]["image"] == IMAGE
+    assert _deprecated(info, INFO_SCHEMA) == []
+    assert _deprecated({"externalGradingOptions": {"enabled": True}}, INFO_SCHEMA) == ["externalGradingOptions.enabled"]
+    assert f"-t {IMAGE} --push" in (built / "Dockerfile").read_text() and "--platform linux/amd64" in \
+        (built / "Dockerfile").read_text()
+
+
+@pytest.mark.parametrize("image", ["lagrade-prairielearn:latest", "lagrade-prairielearn", "myhost.edu:5000/me/grader",
+                                   "Physics101/Grader", "registry.example.org/me/grader:1"])
+def test_an_image_prairielearn_cannot_pull_is_refused(tmp_path, image):
+    res = CliRunner().invoke(prairielearn, ["build", "-o", str(tmp_path / "out"), "--image", image])
+    assert res.exit_code == 2 and "Docker Hub" in res.output and not (tmp_path / "out").exists(), res.output
+
+
+@pytest.mark.parametrize("image", ["me/grader", "me/lagrade-grader:2026.1", "docker.io/me/grader:1",
+                                   "ghcr.io/physics-dept/lagrade:v1", "quay.io/org/img:tag",
+                                   "registry.gitlab.com/group/project/img:t", "public.ecr.aws/alias/img:1"])
+def test_images_on_the_registries_prairielearn_pulls_from_are_taken(image):
+    from lagrade.deploy.prairielearn import check_image
+
+    assert check_image(image) == image
+
+
+def test_the_question_says_the_assumptions_and_symbols_and_offers_the_template(built):
+    """Students on PrairieLearn have no ``lagrade show`` or ``lagrade template``: the page says what
+    ``lagrade show`` says, and the template is a client file the page offers for download."""
+    from lagrade.describe import template_text
+    from lagrade.library import load_problem
+
+    problem = load_problem("12.43")
+    html = (_question(built) / "question.html").read_text()
+    text = html_unescape(html)
+    for assumption in problem.assumptions:
+        assert assumption in text
+    for symbol in [q.name for q in problem.parameters] + [c.name for s in problem.systems for c in s.coordinates]:
+        assert f"\n  {symbol} " in text or f"\n  {symbol}(t) " in text, symbol
+    for part in problem.parts:
+        assert f"\n  {part.name} " in text
+    assert "{{" not in html and "}}" not in html  # question.html is a Mustache template
+    template = _question(built) / "clientFilesQuestion" / "answer.py"
+    assert template.read_text() == template_text(problem)
+    ast.parse(template.read_text())
+
+    class Tags(HTMLParser):
+        def __init__(self):
+            super().__init__()
+            self.tags: list[tuple[str, dict]] = []
+            self.editor = ""
+            self._in = None
+
+        def handle_starttag(self, tag, attrs):
+            self.tags.append((tag, dict(attrs)))
+            self._in = tag
+
+        def handle_data(self, data):
+            if self._in == "pl-file-editor":
+                self.editor += data
+
+        def handle_endtag(self, tag):
+            self._in = None
+
+    tags = Tags()
+    tags.feed(html)
+    (download,) = [a for t, a in tags.tags if t == "pl-file-download"]
+    assert download["file-name"] == "answer.py" and "directory" not in download  # clientFilesQuestion, the default
+    (panel,) = [i for i, (t, _) in enumerate(tags.tags) if t == "pl-question-panel"]
+    assert tags.tags.index(("pl-file-download", download)) > panel
+    assert tags.editor.strip() == template_text(problem).strip()  # the editor starts from the same template
+
+
+def html_unescape(html: str) -> str:
+    from html import unescape
+
+    return unescape(html)
+
+
+def test_question_uuids_are_unique_per_build_and_kept_by_a_rebuild(built, tmp_path):
+    """Two builds give two UUIDs (two copies in one course do not collide); a rebuild into the same
+    folder keeps its UUID (PrairieLearn knows the question by it); ``--uuid-seed`` reproduces one."""
+    def build(out, *extra):
+        res = CliRunner().invoke(prairielearn, ["build", "-o", str(out), "--image", IMAGE, *extra])
+        assert res.exit_code == 0, res.output
+        return json.loads((out / "questions" / "lagrade-12.43" / "info.json").read_text())["uuid"]
+
+    first = json.loads((_question(built) / "info.json").read_text())["uuid"]
+    second = build(tmp_path / "b")
+    assert first != second
+    assert uuid.UUID(first).version == 4 and uuid.UUID(second).version == 4  # PrairieLearn asks for UUID v4
+    assert build(tmp_path / "b") == second
+    seeded = build(tmp_path / "c", "--uuid-seed", "physics 101, fall 2026")
+    assert seeded == build(tmp_path / "d", "--uuid-seed", "physics 101, fall 2026") != second
+    assert uuid.UUID(seeded).version == 4
+    assert build(tmp_path / "e", "--uuid-seed", "physics 101, spring 2027") != seeded
 
 
 def test_the_schemas_are_not_vacuous():

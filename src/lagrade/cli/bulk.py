@@ -546,33 +546,37 @@ def prairielearn_grade(root: Path) -> None:
 
 @prairielearn.command("build")
 @click.argument("assignment", required=False, type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option("--image", required=True,
+              help="The image name you push the grader under, written into the question's info.json: a public "
+                   "image on Docker Hub (YOURACCOUNT/lagrade-grader:TAG), ghcr.io, quay.io, registry.gitlab.com or "
+                   "public.ecr.aws, the registries PrairieLearn pulls from.")
 @click.option("--output", "-o", type=click.Path(file_okay=False, path_type=Path), default="prairielearn",
               show_default=True, help="The folder to write (docker build it; copy questions/ into the course).")
 @click.option("--problem", default=None, help="The problem of the example question (default: 12.43, or with an "
                                                "ASSIGNMENT one question per problem of it).")
+@click.option("--uuid-seed",
+              help="Draw the questions' UUIDs from this text (the same seed gives the same UUIDs). Default: keep "
+                   "the UUID a build left in --output, else a new random one, so two builds never collide.")
 @click.option("--wheel", type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="Ship this lagrade wheel instead of building one from the checkout.")
 @problems_option
-def prairielearn_build(assignment: Path | None, output: Path, problem: str | None, wheel: Path | None,
-                       problems_dir: tuple[Path, ...]) -> None:
-    """Write the grader's Dockerfile, the lagrade wheel, the entry script and an example question (with an
+def prairielearn_build(assignment: Path | None, image: str, output: Path, problem: str | None, uuid_seed: str | None,
+                       wheel: Path | None, problems_dir: tuple[Path, ...]) -> None:
+    """Write the grader's Dockerfile, the lagrade wheels, the entry script and an example question (with an
     ASSIGNMENT file, like `gradescope build hw7.toml`: a question for each of its problems)."""
-    from lagrade.deploy.prairielearn import build_grader, question_files
+    from lagrade.deploy.prairielearn import BuildError, build_grader, write_question
     from lagrade.deploy.wheel import DeployError
     from lagrade.spec import SpecError
 
     pids = [problem] if problem else [p.id for p in _assignment(assignment, problems_dir).problems] if assignment \
         else ["12.43"]
     try:
-        names = build_grader(output, pids[0], problems_dir, wheel)
+        names = build_grader(output, pids[0], problems_dir, wheel, image=image, uuid_seed=uuid_seed)
         for pid in pids[1:]:  # the grader is the same for every question: only the questions differ
-            question = output / "questions" / f"lagrade-{pid}"
-            question.mkdir(parents=True, exist_ok=True)
-            for name, text in question_files(pid, problems_dir).items():
-                (question / name).write_text(text, encoding="utf-8")
-                names.append(str((question / name).relative_to(output)))
-    except SpecError as exc:
+            names += write_question(output, pid, problems_dir, image=image, uuid_seed=uuid_seed)
+    except (SpecError, BuildError) as exc:
         raise click.UsageError(str(exc)) from None
     except DeployError as exc:
         raise click.ClickException(str(exc)) from None
     click.echo(f"{output}: {', '.join(names)}")
+    click.echo(f"next: docker buildx build --platform linux/amd64 -t {image} --push {output}")

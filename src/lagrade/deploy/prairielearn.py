@@ -15,7 +15,9 @@ then does not count the attempt. The answer runs in lagrade's sandbox as ``lagra
 from __future__ import annotations
 
 import base64
+import hashlib
 import json
+import re
 import tempfile
 import time
 import uuid
@@ -27,7 +29,17 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 #: PrairieLearn's limit on results.json is 1 MB: a plot larger than this is left out (and said)
 MAX_IMAGE_BYTES = 600_000
 ENTRYPOINT = "/usr/local/bin/lagrade-pl-grade"
-IMAGE = "lagrade-prairielearn:latest"
+#: the answer file a question asks for: in the editor, and offered for download (clientFilesQuestion/)
+ANSWER_FILE = "answer.py"
+
+#: The registries PrairieLearn pulls grader images from (its docs/dockerImages.md, "Supported
+#: registries"): public images, no other host, no port; Docker Hub's are ``org/image[:tag]``.
+_NAME = r"[a-z0-9]+(?:(?:[._]|__|-+)[a-z0-9]+)*"
+_ACCOUNT = r"[a-z0-9]+(?:(?:_|__|-+)[a-z0-9]+)*"  # no dot: Docker reads "a.b/..." as a registry host
+_TAG = r"(?::[A-Za-z0-9_][A-Za-z0-9_.-]{0,127})?(?:@sha256:[0-9a-f]{64})?"
+IMAGE_PATTERN = re.compile(
+    rf"^(?:(?:docker\.io|index\.docker\.io|registry-1\.docker\.io|ghcr\.io|quay\.io|public\.ecr\.aws)/"
+    rf"{_NAME}/{_NAME}|registry\.gitlab\.com/{_NAME}(?:/{_NAME})+|{_ACCOUNT}/{_NAME}){_TAG}$")
 
 
 class JobParams(BaseModel):
@@ -134,9 +146,33 @@ def write_results(root: Path = Path("/grade")) -> dict:
 
 # ------------------------------------------------------------------------------------- the build
 
-DOCKERFILE = """# lagrade's PrairieLearn external grader: build with
-#   docker build -t {image} .
-# and set "image" in each question's info.json to the name you push it under.
+class BuildError(ValueError):
+    """What ``lagrade prairielearn build`` was given cannot make a question PrairieLearn runs."""
+
+
+def check_image(image: str) -> str:
+    """``image`` if PrairieLearn can pull it (a public image on a registry it supports), else
+    :class:`BuildError` saying what it takes."""
+    if not IMAGE_PATTERN.match(image):
+        raise BuildError(
+            f"--image {image!r}: PrairieLearn pulls grader images only from Docker Hub (YOURACCOUNT/NAME:TAG), "
+            "ghcr.io/ORG/NAME:TAG, quay.io/ORG/NAME:TAG, registry.gitlab.com/GROUP/PROJECT/NAME:TAG or "
+            "public.ecr.aws/ALIAS/NAME:TAG (lower case, no port); a name with no account, like "
+            "lagrade-prairielearn, names no image you can push")
+    return image
+
+
+def question_uuid(seed: str, problem_id: str) -> str:
+    """The question's UUID drawn from ``seed`` and the problem: a version 4 UUID (what PrairieLearn's
+    schema asks for), the same for the same seed and problem."""
+    digest = hashlib.sha256(f"lagrade-prairielearn:{seed}:{problem_id}".encode()).digest()
+    return str(uuid.UUID(bytes=digest[:16], version=4))
+
+
+DOCKERFILE = """# lagrade's PrairieLearn external grader. PrairieLearn runs linux/amd64 images pulled from a
+# public registry: build and push with
+#   docker buildx build --platform linux/amd64 -t {image} --push .
+# (the question's info.json names this image in externalGradingOptions.image)
 FROM python:3.11-slim
 COPY {wheel} {data_wheel} /tmp/
 RUN pip install --no-cache-dir /tmp/{wheel} /tmp/{data_wheel} && rm /tmp/{wheel} /tmp/{data_wheel}
@@ -164,47 +200,90 @@ def generate(data):
 '''
 
 
-def _skeleton(problem) -> str:
-    lines = [f'"""Answer to problem {problem.id}: {problem.title}."""', "", "from lagrade.answer import *", ""]
-    for part in problem.parts:
-        lines += [f"# {part.prompt}", f"{part.name} = None", ""]
-    return "\n".join(lines)
-
-
-def question_files(problem_id: str, problems_dirs: tuple[Path, ...] = (), image: str = IMAGE) -> dict[str, str]:
-    """``info.json``, ``question.html`` and ``server.py`` of a question graded by lagrade."""
+def _text(s: str) -> str:
+    """``s`` for question.html: HTML-escaped, and no brace left for PrairieLearn's Mustache pass
+    (question.html is a Mustache template: ``{{`` in a problem's text would be read as a tag)."""
     from html import escape
 
+    return escape(s).replace("{", "&#123;").replace("}", "&#125;")
+
+
+def question_html(problem) -> str:
+    """The question's page: the statement, then what ``lagrade show`` prints (the assumptions, the
+    symbols to use, the parts), the answer template to download, an editor that starts from it."""
+    from lagrade.describe import show_text, template_text
+
+    statement = problem.statement.strip()
+    rest = "\n".join(show_text(problem).split("\n")[1:]).strip()  # the title is the page's
+    if statement and rest.startswith(statement):  # the statement is said as prose above
+        rest = rest[len(statement):].strip()
+    return (
+        "<pl-question-panel>\n"
+        + (f"  <p>{_text(statement)}</p>\n" if statement else "")
+        + f"  <p>Write your answer in <code>{ANSWER_FILE}</code> with sympy: bind each part below to its name, "
+        "with the symbols below (the template declares them). Download the template, or edit it below.</p>\n"
+        f"  <pre class=\"lagrade-problem\">{_text(rest)}</pre>\n"
+        f"  <p><pl-file-download file-name=\"{ANSWER_FILE}\" label=\"Download the answer template ({ANSWER_FILE})\">"
+        "</pl-file-download></p>\n"
+        "</pl-question-panel>\n\n"
+        f"<pl-file-editor file-name=\"{ANSWER_FILE}\" ace-mode=\"ace/mode/python\">\n"
+        f"{_text(template_text(problem))}</pl-file-editor>\n\n"
+        "<pl-submission-panel>\n  <pl-external-grader-results></pl-external-grader-results>\n"
+        "  <pl-file-preview></pl-file-preview>\n</pl-submission-panel>\n")
+
+
+def question_files(problem_id: str, problems_dirs: tuple[Path, ...] = (), *, image: str,
+                   uuid_seed: str | None = None, question_id: str | None = None) -> dict[str, str]:
+    """``info.json``, ``question.html``, ``server.py`` and ``clientFilesQuestion/answer.py`` (the
+    template) of a question graded by lagrade in ``image``. Its UUID: ``question_id`` if given, else
+    drawn from ``uuid_seed`` (:func:`question_uuid`), else a random UUID4."""
+    from lagrade.describe import template_text
     from lagrade.library import load_problem
 
+    check_image(image)
     problem = load_problem(problem_id, problems_dirs)
-    file = "answer.py"
     qid = f"lagrade-{problem.id}"
-    info = {"uuid": str(uuid.uuid5(uuid.NAMESPACE_URL, f"lagrade:{problem.id}")), "type": "v3",
+    if question_id is None:
+        question_id = question_uuid(uuid_seed, problem.id) if uuid_seed is not None else str(uuid.uuid4())
+    # no externalGradingOptions.enabled: PrairieLearn's schema marks it "[DEPRECATED, DO NOT USE]"
+    info = {"uuid": question_id, "type": "v3",
             "title": f"{problem.id}: {problem.title}", "topic": "Lagrangian and Hamiltonian dynamics",
             "tags": ["lagrade"], "gradingMethod": "External", "singleVariant": True, "partialCredit": True,
-            "externalGradingOptions": {"enabled": True, "image": image, "entrypoint": ENTRYPOINT, "timeout": 120}}
-    parts = "".join(f"<li><code>{escape(p.name)}</code>: {escape(p.prompt)}</li>" for p in problem.parts)
-    html = (f"<pl-question-panel>\n  <p>{escape(problem.statement.strip())}</p>\n  <p>Assign each part in "
-            f"<code>{file}</code> (sympy; <code>lagrade template {escape(problem.id)}</code> gives the names):</p>\n"
-            f"  <ul>{parts}</ul>\n</pl-question-panel>\n\n"
-            f"<pl-file-editor file-name=\"{file}\" ace-mode=\"ace/mode/python\">\n{escape(_skeleton(problem))}\n"
-            "</pl-file-editor>\n\n<pl-submission-panel>\n  <pl-external-grader-results></pl-external-grader-results>\n"
-            "  <pl-file-preview></pl-file-preview>\n</pl-submission-panel>\n")
-    return {"info.json": json.dumps(info, indent=2) + "\n", "question.html": html,
-            "server.py": SERVER_PY.format(qid=qid, problem=problem.id, file=file)}
+            "externalGradingOptions": {"image": image, "entrypoint": ENTRYPOINT, "timeout": 120}}
+    return {"info.json": json.dumps(info, indent=2) + "\n", "question.html": question_html(problem),
+            "server.py": SERVER_PY.format(qid=qid, problem=problem.id, file=ANSWER_FILE),
+            f"clientFilesQuestion/{ANSWER_FILE}": template_text(problem)}
+
+
+def _kept_uuid(info: Path) -> str | None:
+    """The UUID of the question an earlier build wrote here (a rebuild keeps it: PrairieLearn knows a
+    question by it, and a new one would make another question, without the old one's history)."""
+    try:
+        value = json.loads(info.read_text(encoding="utf-8")).get("uuid")
+    except (OSError, ValueError, AttributeError):
+        return None
+    ok = isinstance(value, str) and re.fullmatch(r"[0-9a-fA-F]{8}(-[0-9a-fA-F]{4}){3}-[0-9a-fA-F]{12}", value)
+    return value if ok else None
 
 
 def build_grader(output: Path, problem_id: str = "12.43", problems_dirs: tuple[Path, ...] = (),
-                 wheel: Path | None = None) -> list[str]:
-    """Write the Docker build folder (Dockerfile, wheel, entry script) and one example question
-    (``questions/lagrade-<id>/``) into ``output``; the files written, relative to it."""
+                 wheel: Path | None = None, *, image: str, uuid_seed: str | None = None) -> list[str]:
+    """Write the Docker build folder (Dockerfile, wheels, entry script) and one example question
+    (``questions/lagrade-<id>/``) into ``output``; the files written, relative to it.
+
+    The question's UUID: drawn from ``uuid_seed`` if given; else the one an earlier build left in
+    ``output`` (a rebuild is the same question); else a fresh random UUID4, so that two builds never
+    collide in one course."""
     import shutil
 
     from lagrade.deploy.wheel import DATA_WHEEL, check_wheel, grader_wheels
 
+    check_image(image)
     if wheel is not None:
         check_wheel(wheel)
+    question = output / "questions" / f"lagrade-{problem_id}"
+    kept = _kept_uuid(question / "info.json") if uuid_seed is None else None
+    files = question_files(problem_id, problems_dirs, image=image, uuid_seed=uuid_seed, question_id=kept)
     output.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="lagrade-pl-build-") as tmp:
         engine, data = grader_wheels(Path(tmp) / "wheel", wheel)
@@ -214,14 +293,31 @@ def build_grader(output: Path, problem_id: str = "12.43", problems_dirs: tuple[P
         for whl in (engine, data):
             if whl.resolve() != (output / whl.name).resolve():
                 shutil.copyfile(whl, output / whl.name)
-    (output / "Dockerfile").write_text(DOCKERFILE.format(image=IMAGE, wheel=engine.name, data_wheel=data.name,
+    (output / "Dockerfile").write_text(DOCKERFILE.format(image=image, wheel=engine.name, data_wheel=data.name,
                                                          entrypoint=ENTRYPOINT))
     (output / "lagrade-pl-grade").write_text(ENTRY_SCRIPT)
     (output / "lagrade-pl-grade").chmod(0o755)
     written = [engine.name, data.name, "Dockerfile", "lagrade-pl-grade"]
+    _write_question(output, question, files, written)
+    return written
+
+
+def write_question(output: Path, problem_id: str, problems_dirs: tuple[Path, ...] = (), *, image: str,
+                   uuid_seed: str | None = None) -> list[str]:
+    """One more question graded by the same grader (an assignment's other problems), its UUID chosen as
+    `build_grader` chooses the example's (``uuid_seed`` is made the problem's own)."""
+    check_image(image)
     question = output / "questions" / f"lagrade-{problem_id}"
-    question.mkdir(parents=True, exist_ok=True)
-    for name, text in question_files(problem_id, problems_dirs).items():
+    kept = _kept_uuid(question / "info.json") if uuid_seed is None else None
+    files = question_files(problem_id, problems_dirs, image=image,
+                           uuid_seed=f"{uuid_seed}/{problem_id}" if uuid_seed is not None else None, question_id=kept)
+    written: list[str] = []
+    _write_question(output, question, files, written)
+    return written
+
+
+def _write_question(output: Path, question: Path, files: dict[str, str], written: list[str]) -> None:
+    for name, text in files.items():
+        (question / name).parent.mkdir(parents=True, exist_ok=True)
         (question / name).write_text(text, encoding="utf-8")
         written.append(str((question / name).relative_to(output)))
-    return written
