@@ -27,6 +27,8 @@ class ProblemGrade:
     parts: list[dict] = field(default_factory=list)
     source: str = ""
     path: str = ""
+    #: the picture of the file's wrong motions (PNG), b"" when there was none to draw, None when not asked
+    plot_png: bytes | None = None
 
 
 @dataclass
@@ -98,7 +100,7 @@ def load_gradebook(db: Path | str) -> Gradebook:
                 else:
                     grades[ap.id] = ProblemGrade(ap.id, pts, possible, True, row["outcome"], row["status"],
                                                  row["reason"], json.loads(row["problems"]), ps, row["source"],
-                                                 row["path"])
+                                                 row["path"], row["plot_png"] if "plot_png" in row.keys() else None)
             students.append(StudentGrade(name, grades))
         skipped = [(r["path"], r["reason"]) for r in store.skipped()]
         try:

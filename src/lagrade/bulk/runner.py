@@ -111,8 +111,9 @@ def problem_totals(p: Plan) -> dict[str, float]:
 def grade_folder(root: Path, assignment: Assignment, db: Path, *, workers: int | None = None,
                  scheduler: Any = None, problems_dirs: tuple[Path, ...] = (), version: str | None = None,
                  on_start: Callable[[int, int], None] | None = None, on_result: ResultCallback | None = None,
-                 regrade: bool = False) -> RunReport:
-    """Grade every new or changed submission under ``root`` into ``db``; see the module docstring."""
+                 regrade: bool = False, plots: bool = False) -> RunReport:
+    """Grade every new or changed submission under ``root`` into ``db``; see the module docstring.
+    ``plots``: also draw each wrong motion (``lagrade check --plot``'s picture) for the report."""
     start = time.monotonic()
     p = plan(root, assignment, problems_dirs, version)
     report = RunReport(total=len(p.layout.submissions), skipped=p.layout.skipped)
@@ -125,13 +126,17 @@ def grade_folder(root: Path, assignment: Assignment, db: Path, *, workers: int |
         present = {(s.student, s.problem) for s in p.layout.submissions}
         report.removed = store.sync_layout(p.layout.students, [(s.path, s.reason) for s in p.layout.skipped], present)
         stored, retries = store.keys(), store.retries()
+        # a wrong answer graded without its picture is graded again when pictures are asked for
+        unplotted = store.unplotted() if plots else set()
         todo = [s for s in p.layout.submissions
-                if regrade or stored.get((s.student, s.problem)) != p.key(s) or (s.student, s.problem) in retries]
+                if regrade or stored.get((s.student, s.problem)) != p.key(s) or (s.student, s.problem) in retries
+                or (s.student, s.problem) in unplotted]
         report.todo, report.up_to_date = len(todo), report.total - len(todo)
         by_key = {(s.student, s.problem): s for s in todo}
-        if regrade:  # forget the stored keys so that record() writes again
+        forget = list(by_key) if regrade else [k for k in by_key if k in unplotted]
+        if forget:  # forget the stored keys so that record() writes again
             with store.transaction():
-                store.db.executemany("DELETE FROM submissions WHERE student = ? AND problem = ?", list(by_key))
+                store.db.executemany("DELETE FROM submissions WHERE student = ? AND problem = ?", forget)
 
         def done(result: dict[str, Any]) -> None:
             sub = by_key[(result["student"], result["problem"])]
@@ -139,7 +144,8 @@ def grade_folder(root: Path, assignment: Assignment, db: Path, *, workers: int |
                          key=p.key(sub), outcome=result["outcome"], status=result["status"], reason=result["reason"],
                          score=result["score"], max_score=result["max_score"], problems=result["problems"],
                          stdout=result.get("stdout", ""), source=sub.data.decode("utf-8", "replace"),
-                         seconds=result["seconds"], parts=result["parts"], jail=result.get("jail"))
+                         seconds=result["seconds"], parts=result["parts"], jail=result.get("jail"),
+                         plot_png=result.get("plot_png") or (b"" if plots else None))
             if result["outcome"] == "failed":
                 report.failed += 1
             if on_result:
@@ -147,7 +153,7 @@ def grade_folder(root: Path, assignment: Assignment, db: Path, *, workers: int |
 
         if on_start:
             on_start(len(todo), report.up_to_date)
-        jobs = [p.job(s) for s in sorted(todo, key=_text_answers_last)]
+        jobs = [{**p.job(s), "plot": plots} for s in sorted(todo, key=_text_answers_last)]
         if scheduler is not None:
             report.backend = "dask"
             report.workers = run_dask(jobs, p.sources, scheduler, done)

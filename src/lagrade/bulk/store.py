@@ -63,6 +63,7 @@ CREATE TABLE IF NOT EXISTS submissions (
     graded_at      TEXT NOT NULL,
     attempts       INTEGER NOT NULL DEFAULT 1,  -- gradings of this key (a grader failure is retried)
     jail           TEXT,                   -- the sandbox layers the file ran under, as the grader said
+    plot_png       BLOB,                   -- the picture of its wrong motions (`lagrade check --plot`'s), if drawn
     PRIMARY KEY (student, problem)
 );
 CREATE TABLE IF NOT EXISTS parts (
@@ -115,6 +116,7 @@ COLUMNS_ADDED = [
     ("submissions", "jail", "TEXT"),
     ("parts", "review", "TEXT"),
     ("parts", "detail", "TEXT"),
+    ("submissions", "plot_png", "BLOB"),
 ]
 #: ``overrides`` came after SCHEMA_VERSION 1: ``CREATE TABLE IF NOT EXISTS`` adds it to an older gradebook
 #: when a writer opens it; readers of an older gradebook see no overrides (:meth:`Store.overrides`)
@@ -238,6 +240,14 @@ class Store:
                                (*RETRIED_STATUSES, MAX_ATTEMPTS))
         return {(r[0], r[1]) for r in rows}
 
+    def unplotted(self) -> set[tuple[str, str]]:
+        """(student, problem) of graded files with a part not correct whose picture was never asked for
+        (``plot_png`` NULL; an empty one means asked, and nothing to draw)."""
+        rows = self.db.execute("SELECT student, problem FROM submissions s WHERE outcome = 'graded' AND plot_png IS NULL "
+                               "AND EXISTS (SELECT 1 FROM parts p WHERE p.student = s.student AND p.problem = s.problem "
+                               "AND p.verdict != 'correct')")
+        return {(r[0], r[1]) for r in rows}
+
     def sync_layout(self, students: list[str], skipped: list[tuple[str, str]],
                     present: set[tuple[str, str]]) -> int:
         """Record the roster and the skipped files; drop results whose file is gone. Returns how many."""
@@ -255,7 +265,7 @@ class Store:
 
     def record(self, *, student: str, problem: str, path: str, key: Key, outcome: str, status: str,
                reason: str, score: float, max_score: float, problems: list[str], stdout: str, source: str,
-               seconds: float, parts: list[dict], jail: str | None = None) -> bool:
+               seconds: float, parts: list[dict], jail: str | None = None, plot_png: bytes | None = None) -> bool:
         """Write one graded submission in its own transaction. False if that exact grade is already stored
         (a stored grader failure with attempts left is replaced, and its attempts counted)."""
         with self.transaction():
@@ -270,10 +280,11 @@ class Store:
             self.db.execute("DELETE FROM submissions WHERE student = ? AND problem = ?", (student, problem))
             self.db.execute(
                 "INSERT INTO submissions(student, problem, path, file_hash, grading_hash, grader_version, outcome, "
-                "status, reason, score, max_score, problems, stdout, source, seconds, graded_at, attempts, jail) "
-                "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                "status, reason, score, max_score, problems, stdout, source, seconds, graded_at, attempts, jail, plot_png) "
+                "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                 (student, problem, path, key.file_hash, key.grading_hash, key.grader_version, outcome, status,
-                 reason, score, max_score, json.dumps(problems), stdout, source, seconds, now, attempts, jail))
+                 reason, score, max_score, json.dumps(problems), stdout, source, seconds, now, attempts, jail,
+                 plot_png))
             self.db.executemany(
                 "INSERT INTO parts(student, problem, part, verdict, score, max_score, method, feedback, answer_text, "
                 "answer_mathml, review, detail, file_hash, grader_version) VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",

@@ -71,13 +71,16 @@ def _assignment(path: Path, problems_dir: tuple[Path, ...]):
 @click.option("--workers", "-j", type=click.IntRange(min=1), help="Grader processes (default: all cores).")
 @click.option("--scheduler", help="Grade on an existing Dask cluster (tcp://host:8786; needs lagrade[dask]).")
 @click.option("--regrade", is_flag=True, help="Grade every submission again, even unchanged ones.")
+@click.option("--plots/--no-plots", default=True, show_default=True,
+              help="Draw each wrong motion against the true one (`lagrade check --plot`'s picture) for the students' "
+                   "report pages (about 0.4 s more per such file); a wrong answer graded without it is graded again.")
 @click.option("--progress/--no-progress", default=None, help="Progress bar (default: when stderr is a terminal).")
 @click.option("--summary/--no-summary", default=True, show_default=True, help="Print the class summary at the end.")
 @click.option("--unsafe-trusted-files", is_flag=True,
               help="Grade even where the OS jail cannot be built (see `lagrade doctor`): only for files you trust.")
 @problems_option
 def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: int | None, scheduler: str | None,
-          regrade: bool, progress: bool | None, summary: bool, unsafe_trusted_files: bool,
+          regrade: bool, plots: bool, progress: bool | None, summary: bool, unsafe_trusted_files: bool,
           problems_dir: tuple[Path, ...]) -> None:
     """Grade a class folder SUBMISSIONS/<student>/<problem-id>.py (or .toml) into a database.
 
@@ -100,7 +103,8 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
     try:
         with bar:
             report = grade_folder(submissions, a, db, workers=workers, scheduler=scheduler, problems_dirs=problems_dir,
-                                  on_start=bar.start, on_result=bar.advance, regrade=regrade)
+                                  on_start=bar.start, on_result=bar.advance, regrade=regrade,
+                                  plots=plots)
     except (StoreError, sqlite3.DatabaseError) as exc:
         raise _gradebook_error(db, exc, "give another --db path or move it away") from None
     except KeyboardInterrupt:
