@@ -161,3 +161,111 @@ def test_verdicts_to_review_reach_the_class_page_and_tracebacks_no_student_page(
     for page in (folder / "students").glob("*.html"):
         assert "XYZZY" not in page.read_text(), page
 
+
+
+PNG = b"\x89PNG\r\n\x1a\n"
+
+
+def _report(db, folder):
+    res = CliRunner().invoke(report, [str(db), "--html", str(folder)])
+    assert res.exit_code == 0, res.output
+    return folder
+
+
+def test_the_class_page_has_a_histogram_of_total_scores(graded, tmp_path):
+    """A matplotlib PNG of the totals, its counts said in the alt text (a screen reader's) and in
+    ``data-counts``: ada 8 of 8 (the last bin holds full marks), bob 2.25, cy 4."""
+    from html import unescape
+
+    tmp, db, totals = graded
+    folder = _report(db, tmp_path / "report")
+    index = (folder / "index.html").read_text()
+    fig = re.search(r'<figure id="totals-histogram" data-counts="([\d,]+)"><img src="totals.png" alt="([^"]+)"', index)
+    assert fig, index[:2000]
+    assert [int(c) for c in fig.group(1).split(",")] == [0, 0, 1, 0, 0, 1, 0, 0, 0, 1]
+    alt = unescape(fig.group(2))
+    assert "total scores out of 8 points, 3 students" in alt and "1 student from 1.6 to 2.4" in alt, alt
+    assert "1 student from 7.2 to 8" in alt and "1 student from 4 to 4.8" in alt, alt
+    assert (folder / "totals.png").read_bytes()[:8] == PNG
+
+
+def test_a_wrong_motion_is_drawn_on_its_students_page(graded, tmp_path):
+    """``lagrade grade`` stores the picture PrairieLearn's grader and ``lagrade check --plot`` draw;
+    the student's page shows it, with alt text; a right answer has none."""
+    tmp, db, _ = graded
+    with sqlite3.connect(db) as con:
+        stored = dict(((s, p), n) for s, p, n in con.execute("SELECT student, problem, length(plot_png) FROM submissions"))
+    assert stored[("bob", "12.43")] > 1000 and stored[("ada", "12.43")] == 0  # 0: asked, nothing wrong to draw
+    folder = _report(db, tmp_path / "report")
+    bob = (folder / "students" / "bob.html").read_text()
+    fig = re.search(r'<figure class="motion" data-problem="12.43"><img src="([^"]+)" alt="([^"]+)"', bob)
+    assert fig, bob
+    assert (folder / "students" / fig.group(1)).read_bytes()[:8] == PNG
+    assert "Your motion" in fig.group(2) and "12.43" in fig.group(2) and "H" in fig.group(2)
+    assert 'class="motion"' not in (folder / "students" / "ada.html").read_text()
+
+
+def test_a_wrong_answer_graded_without_its_picture_is_drawn_by_the_next_run(tmp_path):
+    root = tmp_path / "submissions"
+    (root / "bob").mkdir(parents=True)
+    shutil.copyfile(REPO / "tests/answers/12.43/wrong_sign_of_V.py", root / "bob" / "12.43.py")
+    hw = tmp_path / "hw.toml"
+    hw.write_text('name = "hw"\n[[problems]]\nid = "12.43"\n')
+    db = tmp_path / "hw.sqlite"
+    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "1", "--no-plots"])
+    assert res.exit_code == 0, res.output
+    with sqlite3.connect(db) as con:
+        assert con.execute("SELECT plot_png FROM submissions").fetchone()[0] is None
+    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "1"])
+    assert res.exit_code == 0 and "1 graded now" in res.output, res.output
+    with sqlite3.connect(db) as con:
+        assert con.execute("SELECT plot_png FROM submissions").fetchone()[0][:8] == PNG
+    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "1"])
+    assert res.exit_code == 0 and "0 graded now" in res.output, res.output
+
+
+def test_files_that_could_not_be_graded_say_whose(graded, tmp_path):
+    tmp, db, _ = graded
+    copy = tmp_path / "hw.sqlite"
+    shutil.copyfile(db, copy)
+    with sqlite3.connect(copy) as con:
+        con.execute("UPDATE submissions SET outcome = 'failed', status = 'syntax', "
+                    "reason = '12.3.py:2: syntax error: XYZZY' WHERE student = 'bob' AND problem = '12.3'")
+    index = (_report(copy, tmp_path / "report") / "index.html").read_text()
+    section = index[index.index("<h2>Files that could not be graded</h2>"):]
+    section = section[:section.index("</table>")]
+    row = re.search(r'<tr data-student="bob" data-problem="12.3">(.*?)</tr>', section)
+    assert row and 'href="students/bob.html"' in row.group(1) and "XYZZY" in row.group(1) and "syntax" in row.group(1)
+
+
+@pytest.mark.skipif(_chromium() is None, reason="no chromium: apt-get install -y chromium")
+def test_the_points_column_does_not_run_into_the_answer_at_1280_px(graded, tmp_path):
+    """Weights whose points print long (1.2354 / 2.4707, weight 3.333 of 7.083): in a 1280 px window
+    every points cell's text ends inside its cell, left of the answer."""
+    sync_api = pytest.importorskip("playwright.sync_api")
+    tmp, db, _ = graded
+    copy = tmp_path / "hw.sqlite"
+    shutil.copyfile(db, copy)
+    with sqlite3.connect(copy) as con:
+        a = json.loads(con.execute("SELECT value FROM meta WHERE key = 'assignment'").fetchone()[0])
+        a["problems"][0].update(weight=7.0, parts={"H": 1.25, "hamilton": 2.5, "eom": 3.333})
+        con.execute("UPDATE meta SET value = ? WHERE key = 'assignment'", (json.dumps(a),))
+    folder = _report(copy, tmp_path / "report")
+    measure = """() => Array.from(document.querySelectorAll('table.parts tr[data-part]')).map(tr => {
+      const pts = tr.querySelector('td[data-label=points]'), ans = tr.querySelector('td.answer'), r = document.createRange();
+      r.selectNodeContents(pts);
+      return [tr.dataset.part, r.getBoundingClientRect().right, ans.getBoundingClientRect().left,
+              pts.scrollWidth > pts.clientWidth];
+    })"""
+    with sync_api.sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=_chromium(), args=["--headless", "--no-sandbox", "--disable-gpu"])
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 1000})
+            for student in ("ada", "bob"):
+                page.goto((folder / "students" / f"{student}.html").as_uri())
+                rows = page.evaluate(measure)
+                assert len(rows) == 5
+                assert "1.2354 / 2.4707" in page.content() or student == "ada"
+                assert [r for r in rows if r[1] > r[2] or r[3]] == [], (student, rows)
+        finally:
+            browser.close()

@@ -1,10 +1,13 @@
 """The HTML report: a static folder an instructor opens in a browser, nothing to install.
 
-``index.html`` is the class overview (a histogram per problem, per-part success rates, the most
-common wrong answers rendered as math, files that could not be graded or were skipped, every
-student's points); ``students/<student>.html`` is one feedback page per student with their answers
-as rendered math (presentation MathML, which browsers render natively: no script, no network) and
-the feedback of every part. Numbers carry ``data-`` attributes so that tests can read them back.
+``index.html`` is the class overview (a histogram of total scores, ``totals.png`` with its counts
+in the alt text; a histogram per problem, per-part success rates, the most common wrong answers
+rendered as math, whose files could not be graded and why, skipped files, every student's points);
+``students/<student>.html`` is one feedback page per student with their answers as rendered math
+(presentation MathML, which browsers render natively: no script, no network), the feedback of every
+part, and the picture of a wrong motion against the true one (``students/<student>-<problem>.png``,
+``lagrade check --plot``'s, drawn by ``lagrade grade``). Numbers carry ``data-`` attributes so that
+tests can read them back.
 """
 
 from __future__ import annotations
@@ -42,7 +45,11 @@ td code { overflow-wrap: anywhere; } td { overflow-wrap: anywhere; }
 td > .formula { display: block; overflow-x: auto; max-width: 100%; padding-bottom: .2em; }
 table.parts { width: 100%; table-layout: fixed; }
 table.parts col.c-part { width: 6em; } table.parts col.c-verdict { width: 8em; }
-table.parts col.c-points { width: 8em; } table.parts col.c-answer { width: 38%; }
+table.parts col.c-points { width: 10em; } table.parts col.c-answer { width: 36%; }
+table.parts td.points { white-space: normal; overflow-wrap: anywhere; }
+table.parts td.points .weight { display: block; font-size: .85em; }
+figure { margin: .5em 0 1.5em; } figure img { max-width: 100%; height: auto; border: 1px solid #eee; }
+figcaption { font-size: .9em; color: #444; }
 table.parts td.answer > .formula { display: block; overflow-x: auto; max-width: 100%; padding-bottom: .2em; }
 table.parts td.feedback { overflow-wrap: anywhere; }
 .override { background: #fef9c3; } .why { display: block; font-size: .9em; color: #854d0e; }
@@ -134,6 +141,62 @@ def _histogram_svg(counts: list[int], possible: float, pid: str) -> str:
             f"aria-label=\"points for problem {escape(pid)}\">{''.join(bars)}{axis}</svg>")
 
 
+def _bins(possible: float, n: int) -> list[tuple[float, float]]:
+    return [(possible * i / n, possible * (i + 1) / n) for i in range(n)]
+
+
+def totals_histogram(book: Gradebook, png: Path, bins: int = 10) -> str:
+    """Draw the histogram of the students' total scores into ``png`` (matplotlib) and return its
+    ``<figure>``: the counts per bin are in the alt text and in ``data-counts``, for a screen reader
+    and for tests (the same bins as the problems' histograms: the last holds full marks)."""
+    from lagrade.bulk.summary import histogram
+
+    possible = book.possible
+    totals = [s.points for s in book.students]
+    counts = histogram(totals, possible, bins)
+    edges = _bins(possible, bins)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 2.6))
+    width = possible / bins if possible else 1.0
+    ax.bar([lo for lo, _ in edges], counts, width=width, align="edge", color="#3b82f6", edgecolor="white")
+    ax.set_xlim(0, possible or 1.0)
+    ax.set_xlabel(f"total points (of {_n(possible)})")
+    ax.set_ylabel("students")
+    ax.yaxis.get_major_locator().set_params(integer=True)
+    ax.set_title("Total scores", fontsize=10, loc="left")
+    fig.tight_layout()
+    fig.savefig(png, format="png", dpi=100, metadata={"Software": None})
+    plt.close(fig)
+    said = [f"{c} {'student' if c == 1 else 'students'} from {_n(lo)} to {_n(hi)}" for (lo, hi), c in zip(edges, counts)
+            if c]
+    mean = sum(totals) / len(totals) if totals else 0.0
+    alt = (f"Histogram of total scores out of {_n(possible)} points, {len(totals)} students, mean {mean:.2f}: "
+           + ("; ".join(said) if said else "no students") + " (the last bin includes full marks).")
+    return (f"<figure id=\"totals-histogram\" data-counts=\"{','.join(map(str, counts))}\">"
+            f"<img src=\"{escape(png.name)}\" alt=\"{escape(alt)}\" width=\"640\" height=\"260\">"
+            f"<figcaption>Total scores: students per tenth of the {_n(possible)} points.</figcaption></figure>")
+
+
+def _failed_files(book: Gradebook) -> str:
+    """Whose files could not be graded, which problem, and why (each student linked to their page)."""
+    rows = [(s.student, g) for s in book.students for g in s.problems.values() if g.outcome == "failed"]
+    if not rows:
+        return ""
+    counts = failure_counts(book)
+    return ("<h2>Files that could not be graded</h2><p class=\"muted\">" +
+            ", ".join(f"{escape(k)}: {v}" for k, v in counts.most_common()) + "</p>"
+            "<table id=\"failed\"><thead><tr><th>student</th><th>problem</th><th>file</th><th>status</th><th>why</th>"
+            "</tr></thead><tbody>" +
+            "".join(f"<tr data-student=\"{escape(who)}\" data-problem=\"{escape(g.problem)}\">"
+                    f"<td><a href=\"students/{slug(who)}.html\">{escape(who)}</a></td><td>{escape(g.problem)}</td>"
+                    f"<td><code>{escape(g.path)}</code></td><td>{escape(g.status)}</td><td>{escape(g.reason)}</td></tr>"
+                    for who, g in rows) + "</tbody></table>")
+
+
 def _math(text: str | None, mathml: str | None) -> str:
     if mathml:
         return f"<math display=\"inline\">{mathml}</math>" if not mathml.lstrip().startswith("<math") else mathml
@@ -148,7 +211,7 @@ def jail_counts(book: Gradebook) -> Counter:
     return Counter(j for s in book.students for g in s.problems.values() if (j := file_jail(g)))
 
 
-def _index(book: Gradebook) -> str:
+def _index(book: Gradebook, totals_figure: str = "") -> str:
     a = book.assignment
     totals = [s.points for s in book.students]
     mean = sum(totals) / len(totals) if totals else 0.0
@@ -157,7 +220,7 @@ def _index(book: Gradebook) -> str:
            f"class mean <span id=\"mean\" data-value=\"{mean:.6f}\">{mean:.2f}</span> / "
            f"<span id=\"possible\" data-value=\"{book.possible:g}\">{_n(book.possible)}</span> points. "
            f"<span class=\"muted\">Graded by lagrade {escape(book.grader_version)}, accuracy {escape(a.accuracy)}.</span></p>",
-           "<h2>Problems</h2><div class=\"problems\">"]
+           totals_figure, "<h2>Problems</h2><div class=\"problems\">"]
     for st in problem_stats(book):
         rows = "".join(f"<tr data-part=\"{escape(k)}\"><td>{escape(k)}</td><td class=\"num\" data-value=\"{v:.6f}\">"
                        f"{100 * v:.0f}%</td></tr>" for k, v in st.part_success.items())
@@ -197,10 +260,9 @@ def _index(book: Gradebook) -> str:
             out.append(f"<tr><td>{escape(student)}</td><td>{escape(problem)}</td><td>{escape(p['part'])}</td>"
                        f"<td>{escape(p['verdict'])}</td><td>{why}</td></tr>")
         out.append("</tbody></table>")
-    fails = failure_counts(book)
-    if fails:
-        out.append("<h2>Files that could not be graded</h2><ul>" +
-                   "".join(f"<li>{escape(k)}: {v}</li>" for k, v in fails.most_common()) + "</ul>")
+    failed = _failed_files(book)
+    if failed:
+        out.append(failed)
     jails = jail_counts(book)
     if jails:
         out.append("<h2>Sandbox</h2><p class=\"muted\">The sandbox layers each file ran under, as its grader "
@@ -232,10 +294,11 @@ def _index(book: Gradebook) -> str:
     return _page(f"{a.title or a.name}: class report", "\n".join(out))
 
 
-def _problem_section(book: Gradebook, g: ProblemGrade) -> str:
+def _problem_section(book: Gradebook, g: ProblemGrade, picture: str | None = None) -> str:
     """One problem of a student's page: each part's points with the weight the total uses, the answer
     as math (a wide one scrolls in its own cell), the feedback; a message every part shares (a file
-    that could not be used) is said once, above the table."""
+    that could not be used) is said once, above the table; ``picture``: the file name of its wrong
+    motion's picture, shown below the table."""
     head = (f"<section class=\"problem\" data-problem=\"{escape(g.problem)}\"><h2>Problem {escape(g.problem)}: "
             f"<span class=\"points\" data-value=\"{g.points:.6f}\">{_n(g.points)}</span> / {_n(g.possible)}</h2>")
     if not g.submitted:
@@ -273,26 +336,35 @@ def _problem_section(book: Gradebook, g: ProblemGrade) -> str:
         out.append(f"<tr data-part=\"{escape(p['part'])}\"{row_class}>"
                    f"<td data-label=\"part\">{escape(p['part'])}</td>"
                    f"<td data-label=\"verdict\" class=\"{escape(verdict_class)}\">{escape(verdict)}</td>"
-                   f"<td data-label=\"points\" class=\"num\" data-value=\"{p['score']:.6f}\" data-points=\"{earned:.4f}\" "
+                   f"<td data-label=\"points\" class=\"num points\" data-value=\"{p['score']:.6f}\" data-points=\"{earned:.4f}\" "
                    f"data-possible=\"{possible:.4f}\" title=\"{weight}\">{_n(earned)} / {_n(possible)}"
-                   f"<span class=\"muted weight\"><br>{weight}</span></td>"
+                   f"<span class=\"muted weight\">{weight}</span></td>"
                    f"<td data-label=\"your answer\" class=\"answer\"><div class=\"formula\">"
                    f"{_math(p.get('answer_text'), p.get('answer_mathml'))}</div></td>"
                    f"<td data-label=\"feedback\" class=\"feedback\">{feedback}"
                    f"</td></tr>")
     out.append("</tbody></table>")
+    if picture:
+        wrong = [p["part"] for p in g.parts if p["verdict"] not in ("correct", "invalid", "missing")]
+        alt = (f"Your motion (red, dashed) against the true one (black) for problem {g.problem}"
+               + (f", parts {', '.join(wrong)}" if wrong else "") + ": both start from the same state; a dotted "
+               "orange line marks the time where they separate, as the feedback says.")
+        out.append(f"<figure class=\"motion\" data-problem=\"{escape(g.problem)}\"><img src=\"{escape(picture)}\" "
+                   f"alt=\"{escape(alt)}\"><figcaption>Your motion against the true one, one panel per "
+                   "coordinate (the picture <code>lagrade check --plot</code> draws).</figcaption></figure>")
     if g.source:
         out.append(f"<details><summary>the file as graded ({escape(g.path)})</summary><pre>{escape(g.source)}</pre></details>")
     out.append("</section>")
     return "".join(out)
 
 
-def _student(book: Gradebook, s: StudentGrade) -> str:
+def _student(book: Gradebook, s: StudentGrade, pictures: dict[str, str] | None = None) -> str:
     a = book.assignment
+    pictures = pictures or {}
     body = ["<p><a href=\"../index.html\">class report</a></p>",
             f"<h1>{escape(a.title or a.name)}: {escape(s.student)}</h1>",
             f"<p>Total <span id=\"total\" data-value=\"{s.points:.6f}\">{_n(s.points)}</span> / {_n(s.possible)} points.</p>"]
-    body += [_problem_section(book, g) for g in s.problems.values()]
+    body += [_problem_section(book, g, pictures.get(g.problem)) for g in s.problems.values()]
     return _page(f"{s.student}: {a.title or a.name}", "\n".join(body), depth=1)
 
 
@@ -305,7 +377,14 @@ def write_report(book: Gradebook, folder: Path) -> Path:
     students.mkdir(parents=True)
     (folder / "style.css").write_text(CSS, encoding="utf-8")
     (folder / "report.js").write_text(SORT_JS, encoding="utf-8")
-    (folder / "index.html").write_text(_index(book), encoding="utf-8")
+    figure = totals_histogram(book, folder / "totals.png") if book.students else ""
+    (folder / "index.html").write_text(_index(book, figure), encoding="utf-8")
     for s in book.students:
-        (students / f"{slug(s.student)}.html").write_text(_student(book, s), encoding="utf-8")
+        pictures = {}
+        for g in s.problems.values():
+            if g.plot_png:  # the student's own page only: a picture of their equations' motion
+                name = f"{slug(s.student)}-{slug(g.problem)}.png"
+                (students / name).write_bytes(g.plot_png)
+                pictures[g.problem] = name
+        (students / f"{slug(s.student)}.html").write_text(_student(book, s, pictures), encoding="utf-8")
     return folder / "index.html"
