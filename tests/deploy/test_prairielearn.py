@@ -198,10 +198,15 @@ def test_question_uuids_are_unique_per_build_and_kept_by_a_rebuild(built, tmp_pa
     assert first != second
     assert uuid.UUID(first).version == 4 and uuid.UUID(second).version == 4  # PrairieLearn asks for UUID v4
     assert build(tmp_path / "b") == second
-    seeded = build(tmp_path / "c", "--uuid-seed", "physics 101, fall 2026")
-    assert seeded == build(tmp_path / "d", "--uuid-seed", "physics 101, fall 2026") != second
-    assert uuid.UUID(seeded).version == 4
-    assert build(tmp_path / "e", "--uuid-seed", "physics 101, spring 2027") != seeded
+    from lagrade.deploy.prairielearn import question_files
+
+    def seeded(seed):
+        return json.loads(question_files("12.43", image=IMAGE, uuid_seed=seed)["info.json"])["uuid"]
+
+    fall = seeded("physics 101, fall 2026")
+    assert fall == seeded("physics 101, fall 2026") != seeded("physics 101, spring 2027")
+    assert uuid.UUID(fall).version == 4 and fall not in (first, second)
+    assert build(tmp_path / "b", "--uuid-seed", "physics 101, fall 2026") == fall  # the seed wins over the kept one
 
 
 def test_the_schemas_are_not_vacuous():
