@@ -105,7 +105,7 @@ def test_prairielearn_build_takes_the_assignment_as_the_readme_says(tmp_path, mo
 
     built = []
 
-    def fake_build(output, problem_id, problems_dirs=(), wheel=None):
+    def fake_build(output, problem_id, problems_dirs=(), wheel=None, *, image, uuid_seed=None):
         built.append(problem_id)
         (output / "questions" / f"lagrade-{problem_id}").mkdir(parents=True)
         return ["Dockerfile"]
@@ -113,7 +113,7 @@ def test_prairielearn_build_takes_the_assignment_as_the_readme_says(tmp_path, mo
     monkeypatch.setattr(pl, "build_grader", fake_build)
     hw7 = tmp_path / "hw7.toml"
     hw7.write_text('title = "Homework 7"\n[[problems]]\nid = "12.22"\n[[problems]]\nid = "12.43"\n')
-    code, out = run("prairielearn", "build", str(hw7), "-o", str(tmp_path / "pl"))
+    code, out = run("prairielearn", "build", str(hw7), "-o", str(tmp_path / "pl"), "--image", "course/lagrade:1")
     assert code == 0, out
     assert built == ["12.22"]
     assert (tmp_path / "pl" / "questions" / "lagrade-12.43" / "info.json").is_file()
