@@ -130,7 +130,8 @@ def test_a_preview_that_never_ends_is_cut_off_and_the_server_keeps_answering(tmp
             time.sleep(0.2)
         ask.join(timeout=max(0.0, 20 - (time.monotonic() - started)))
         assert not ask.is_alive(), "the preview of a power bomb did not end in 20 s"
-        assert "longer than 3 s" in out["error"] and slowest < 1.0
+        # refused by the readers' size estimate at once, or cut off by the preview's own bound: never a hang
+        assert ("longer than 3 s" in out["error"] or "too large" in out["error"]) and slowest < 1.0, out
         r = browser.post(url, headers=csrf, json={"part": "L", "value": "m1*x_d^2"}).json()
         assert r["error"] is None and "<math" in r["mathml"]
 
