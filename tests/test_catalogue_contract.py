@@ -64,7 +64,6 @@ CATALOGUE_ERRATA: dict[tuple[str, str], tuple[str, object]] = {
 NO_VALUE: dict[tuple[str, str], str] = {
     ("P12.15", "frequency"): "the results give only the limits of the two modes (m1 >> m2, m1 << m2), not the "
                              "frequencies `omega` asks",
-    ("P12.50", "trajectory"): "no elementary closed-form x(t) (the results say so)",
 }
 
 #: Entries whose test is expected to fail until work outside this file lands: (test, id) -> why. Each
@@ -662,7 +661,6 @@ def test_meaning_can_fail(tmp_path):
 #: parts are either asked by the book (their values transcribed from the catalogue's results, in
 #: tests/catalogue/) or `extra = true` (issue 33). The line goes when the problem scores full marks.
 NOT_YET_FULL: dict[str, str] = {
-    "12.50": "solution: the book asks it, the catalogue gives no value (NO_VALUE: no closed form)",
 }
 
 
