@@ -33,6 +33,17 @@ stdout_visibility = "hidden"       # the autograder's stdout
 output_format = "md"               # md | html | text
 ```
 
+A course server's rules (``lagrade serve``; ``lagrade grade`` ignores them), all optional:
+
+```toml
+[rules]
+deadline = 2026-12-01T23:59:00Z    # later attempts are stored, graded and marked late; the gradebook
+                                   # keeps each student's latest attempt made by the deadline
+attempts = 5                       # attempts per problem and student (a 6th is refused)
+attempt_penalty = 0.1              # each attempt after the first takes 10% off its score
+feedback = "named"                 # hints | named | verdict: what a student reads of a wrong part
+```
+
 A student's points on a problem are ``weight * sum(w_part * fraction_part) / sum(w_part)``, where
 ``fraction_part`` is the engine's score of the part over its maximum.  Weights only change the
 points, never the grading, so changing them does not regrade anything.  A part marked extra (one the
@@ -48,7 +59,9 @@ import tomllib
 from pathlib import Path
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from datetime import datetime, timezone
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
 from lagrade.credit import Credit
 from lagrade.limits import GRADING_SECONDS
@@ -104,6 +117,39 @@ class GradescopeOptions(BaseModel):
     output_format: Literal["md", "html", "text"] = "md"
 
 
+Feedback = Literal["hints", "named", "verdict"]
+
+
+class Rules(BaseModel):
+    """What a course server lets a student do and see (docs/server.md, "A course's rules")."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    #: attempts stored after it are graded and marked late; they do not replace the gradebook's grade
+    deadline: datetime | None = None
+    #: attempts per problem and student; None: no limit
+    attempts: int | None = Field(None, ge=1)
+    #: the fraction of an attempt's score taken off for each attempt before it (never below 0)
+    attempt_penalty: float = Field(0.0, ge=0, le=1)
+    #: hints: named mistakes and term hints; named: named mistakes; verdict: the verdict alone
+    feedback: Feedback = "named"
+
+    @field_validator("deadline")
+    @classmethod
+    def _utc(cls, v: datetime | None) -> datetime | None:
+        if v is not None and v.tzinfo is None:  # a TOML local date-time: UTC, as the server's clock
+            v = v.replace(tzinfo=timezone.utc)
+        return v.astimezone(timezone.utc) if v is not None else None
+
+    def deadline_text(self) -> str | None:
+        """The deadline as the server stores attempts' times (``2026-12-01T23:59:00Z``), comparable as text."""
+        return self.deadline.strftime("%Y-%m-%dT%H:%M:%SZ") if self.deadline is not None else None
+
+    def penalty(self, attempt: int) -> float:
+        """The fraction of the score kept by the ``attempt``-th attempt (1, 2, ...)."""
+        return max(0.0, 1.0 - self.attempt_penalty * (attempt - 1))
+
+
 class Assignment(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
@@ -116,6 +162,8 @@ class Assignment(BaseModel):
     limits: Limits = Limits()
     #: partial-credit policy (lagrade.credit.Credit); the defaults are documented in docs/answers.md
     credit: Credit = Credit()
+    #: a course server's rules: deadline, attempts, feedback level (not grading: never regrades)
+    rules: Rules = Rules()
     problems: list[AssignedProblem] = Field(min_length=1)
 
     @model_validator(mode="after")

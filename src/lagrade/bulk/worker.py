@@ -91,7 +91,7 @@ class Grader:
                 loaded = load_answer(path, problem, SandboxLimits(cpu_seconds=limits["cpu_seconds"],
                                                                    wall_seconds=limits["wall_seconds"],
                                                                    memory_mb=limits["memory_mb"]))
-                result = grade_values(problem, loaded, job["accuracy"],
+                result = grade_values(problem, loaded, job["accuracy"], hints=bool(job.get("hints")),
                                       credit=Credit.model_validate(job["credit"]) if job.get("credit") else None,
                                       read_as=(), memo=self.memo)  # the gradebook keeps its own text and MathML
                 parts = []

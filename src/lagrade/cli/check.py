@@ -67,8 +67,13 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     else:
         from rich.console import Console
 
+        from lagrade.library import load_problem
         from lagrade.result import render
+        from lagrade.words import in_words
 
+        kinds = {p.name: p.kind for p in load_problem(problem_id, problems_dir).parts}
+        for p in result.parts:  # the evidence in words; its settings stay in --json
+            p.feedback = in_words(p.feedback, kinds.get(p.part, ""))
         render(result, Console(highlight=False))
     from lagrade.library import load_problem
 

@@ -153,15 +153,21 @@ def check_on_server(server: str, token: str | None, problem_id: str, answer: Pat
         else:
             click.echo(f"lagrade: {message}", err=True)
         return 2
+    extra = {k: out[k] for k in ("rules", "late", "penalty") if k in out}  # the course's rules, as the server applied them
     if as_json:
-        click.echo(json.dumps({**json.loads(result.model_dump_json()), "submission_id": out.get("submission_id")}))
+        click.echo(json.dumps({**json.loads(result.model_dump_json()), "submission_id": out.get("submission_id"),
+                               **extra}))
     else:
         from rich.console import Console
 
         from lagrade.result import render
 
         render(result, Console(highlight=False))
-        click.echo(f"submission {out.get('submission_id')} on {server}", err=True)
+        rules = out.get("rules") or {}
+        said = [out[k] for k in ("late", "penalty") if out.get(k)]
+        if rules.get("attempts_allowed"):
+            said.append(f"attempt {rules['attempt']} of {rules['attempts_allowed']}")
+        click.echo(f"submission {out.get('submission_id')} on {server}" + "".join(f"; {s}" for s in said), err=True)
     if out.get("outcome") == "failed":
         return 2
     return 0 if result.full_marks else 1

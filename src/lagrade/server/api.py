@@ -61,10 +61,12 @@ def problems(request: Request) -> list[dict]:
 def problem(pid: str, request: Request) -> dict:
     """What ``lagrade show`` and ``lagrade template`` print, and the fields of the student page."""
     server = _server(request)
-    server.identify(request)
+    who = server.identify(request)
     p = server.problem(pid)
+    from lagrade.server.rules import standing
+
     return {"id": pid, "title": p.title, "show": server.text("show", pid), "template": server.text("template", pid),
-            "fields": server.fields(pid)}
+            "fields": server.fields(pid), "rules": standing(server, who.student, pid, who.instructor)}
 
 
 @router.post("/problems/{pid}/check", openapi_extra=_CHECK_BODY, status_code=200,
@@ -112,14 +114,22 @@ async def submit(server, who, pid: str, suffix: str, data: bytes, plot: bool = F
     (the same file again is the same attempt, with or without its picture as it was first graded)."""
     from lagrade.bulk.layout import file_hash
 
+    from lagrade.server.db import AttemptsUsed
+    from lagrade.server.rules import view
+
+    rules = server.assignment.rules
+    plot = plot and (rules.feedback != "verdict" or who.instructor)  # verdict only: no picture of the motion
     server.limit(who)  # admitted by the queue: counted as in flight until queued or settled
     try:
         sid, new = await asyncio.to_thread(
             server.db.submit, student=who.student, problem=pid, suffix=suffix, data=data, file_hash=file_hash(data),
-            grading_hash=server.plan.keys[pid], version=server.plan.version)
-    except BaseException:
+            grading_hash=server.plan.keys[pid], version=server.plan.version,
+            max_attempts=None if who.instructor else rules.attempts)
+    except BaseException as exc:
         if server.queue is not None:
             server.queue.settle(who.student)
+        if isinstance(exc, AttemptsUsed):
+            raise HTTPException(403, str(exc)) from None
         raise
     if server.queue is not None:
         if new:
@@ -128,9 +138,10 @@ async def submit(server, who, pid: str, suffix: str, data: bytes, plot: bool = F
             server.queue.settle(who.student)
     att = await server.queue.wait(sid, server.config.wait_seconds) if server.queue is not None else None
     if att is None or not att.graded:
-        return JSONResponse({"submission_id": sid, "state": "queued",
+        att = att or await asyncio.to_thread(server.db.attempt, sid)
+        return JSONResponse({**view(server, att, who),
                              "detail": f"stored and queued; GET /api/v1/submissions/{sid} for the grade"}, 202)
-    return JSONResponse({**att.result, "submission_id": sid, "state": "graded"})
+    return JSONResponse(view(server, att, who))
 
 
 @router.post("/problems/{pid}/preview")
@@ -155,9 +166,9 @@ def submission(sid: SubmissionId, request: Request) -> JSONResponse:
     att = server.db.attempt(sid)
     if att is None or (att.student != who.student and not who.instructor):
         raise HTTPException(404, f"no submission {sid} of yours")
-    if not att.graded:
-        return JSONResponse({"submission_id": sid, "state": "queued"}, 202)
-    return JSONResponse({**att.result, "submission_id": sid, "state": "graded"})
+    from lagrade.server.rules import view
+
+    return JSONResponse(view(server, att, who), 200 if att.graded else 202)
 
 
 @router.get("/submissions/{sid}/plot.png", response_class=Response,
@@ -171,7 +182,7 @@ def plot(sid: SubmissionId, request: Request) -> Response:
     att = server.db.attempt(sid)
     if att is None or (att.student != who.student and not who.instructor):
         raise HTTPException(404, f"no submission {sid} of yours")
-    png = server.db.plot(sid)
+    png = server.db.plot(sid) if server.assignment.rules.feedback != "verdict" or who.instructor else None
     if png is None:
         raise HTTPException(404, f"submission {sid} has no picture (not graded yet, or no dynamics part is wrong)")
     return Response(png, media_type="image/png", headers={
@@ -186,7 +197,9 @@ def submissions(pid: str, request: Request) -> list[dict]:
     server = _server(request)
     who = server.identify(request)
     server.problem(pid)
-    return [{"submission_id": a.id, "state": a.state, "created_at": a.created_at, "file_hash": a.file_hash,
-             "score": a.result["score"] if a.result else None,
-             "max_score": a.result["max_score"] if a.result else None}
-            for a in server.db.attempts(who.student, pid)]
+    from lagrade.server.rules import rows
+
+    return [{"submission_id": r["id"], "state": r["state"], "created_at": r["created_at"], "file_hash": r["file_hash"],
+             "score": r["result"]["score"] if r["result"] else None,
+             "max_score": r["result"]["max_score"] if r["result"] else None, "late": r["late"]}
+            for r in rows(server, server.db.attempts(who.student, pid), who)]

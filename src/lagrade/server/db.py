@@ -168,6 +168,10 @@ def refuse_foreign(path: Path) -> None:
         raise NotAServerDatabase(f"{path} is not a lagrade serve database ({what}); {advice}")
 
 
+class AttemptsUsed(RuntimeError):
+    """A student has made every attempt at a problem the assignment's rules allow."""
+
+
 class DatabaseBusy(RuntimeError):
     """Another server serves this database already; the message says which and what to do."""
 
@@ -368,9 +372,11 @@ class Database:
     # ------------------------------------------------------------------ attempts
 
     def submit(self, *, student: str, problem: str, suffix: str, data: bytes, file_hash: str, grading_hash: str,
-               version: str) -> tuple[int, bool]:
+               version: str, max_attempts: int | None = None) -> tuple[int, bool]:
         """Store an attempt before it is graded: (its id, True if new). The same content for the same
-        grading is the same attempt (a resubmission is idempotent)."""
+        grading is the same attempt (a resubmission is idempotent). ``max_attempts``: AttemptsUsed
+        instead of a new attempt beyond that many (counted under the write lock: two at once cannot
+        both be the last)."""
         key = (server_submissions.c.student == student, server_submissions.c.problem == problem,
                server_submissions.c.file_hash == file_hash, server_submissions.c.grading_hash == grading_hash,
                server_submissions.c.grader_version == version)
@@ -378,6 +384,9 @@ class Database:
             found = c.execute(select(server_submissions.c.id).where(*key)).scalar_one_or_none()
             if found is not None:
                 return found, False
+            if max_attempts is not None and self._count(c, student, problem) >= max_attempts:
+                raise AttemptsUsed(f"you have made the {max_attempts} attempts at problem {problem} this assignment "
+                                   "allows; your earlier attempts and their grades are kept")
             try:
                 with c.begin_nested():
                     new = c.execute(insert(server_submissions).values(
@@ -387,6 +396,19 @@ class Database:
                 return c.execute(select(server_submissions.c.id).where(*key)).scalar_one(), False
             self._add_student(c, student)
             return new.inserted_primary_key[0], True
+
+    @staticmethod
+    def _count(c, student: str, problem: str, upto: int | None = None) -> int:
+        q = select(func.count()).select_from(server_submissions).where(
+            server_submissions.c.student == student, server_submissions.c.problem == problem)
+        if upto is not None:
+            q = q.where(server_submissions.c.id <= upto)
+        return int(c.execute(q).scalar_one())
+
+    def count(self, student: str, problem: str, upto: int | None = None) -> int:
+        """How many attempts ``student`` has stored at ``problem`` (up to attempt ``upto``: its number)."""
+        with self.engine.connect() as c:
+            return self._count(c, student, problem, upto)
 
     def attempt(self, sid: int) -> Attempt | None:
         with self.engine.connect() as c:
@@ -422,9 +444,14 @@ class Database:
             rows = c.execute(select(server_submissions.c.state, func.count()).group_by(server_submissions.c.state))
             return {state: n for state, n in rows}
 
-    def finish(self, sid: int, result: dict[str, Any], check: dict[str, Any], plot: bytes | None = None) -> None:
+    def finish(self, sid: int, result: dict[str, Any], check: dict[str, Any], plot: bytes | None = None,
+               deadline: str | None = None, keep: Any = None) -> None:
         """Write one attempt's grade (and its picture): the attempt itself, and the gradebook if it is
-        the student's latest graded attempt at the problem; one transaction."""
+        the student's latest graded attempt at the problem; one transaction.
+
+        ``deadline`` (``2026-12-01T23:59:00Z``): an attempt stored after it is late, and the gradebook
+        keeps the latest attempt stored by then. ``keep(n)``: the fraction of its score the ``n``-th
+        attempt keeps in the gradebook (the assignment's attempt penalty)."""
         with self._write, self.engine.begin() as c:
             row = c.execute(select(server_submissions).where(server_submissions.c.id == sid)).first()
             if row is None or row.state == "graded":
@@ -434,11 +461,18 @@ class Database:
                       .values(state="graded", result=json.dumps(check), graded_at=now))
             if plot:
                 c.execute(insert(server_plots).values(id=sid, png=plot))
+            if deadline is not None and row.created_at > deadline:
+                return  # late: stored, graded and marked; the gradebook keeps the grade made by the deadline
+            counted = [server_submissions.c.created_at <= deadline] if deadline is not None else []
             later = c.execute(select(func.max(server_submissions.c.id)).where(
                 server_submissions.c.student == row.student, server_submissions.c.problem == row.problem,
-                server_submissions.c.state == "graded", server_submissions.c.id > sid)).scalar_one_or_none()
+                server_submissions.c.state == "graded", server_submissions.c.id > sid, *counted)).scalar_one_or_none()
             if later is not None:
                 return
+            factor = keep(self._count(c, row.student, row.problem, sid)) if keep is not None else 1.0
+            if factor != 1.0:
+                result = {**result, "score": result["score"] * factor,
+                          "parts": [{**p, "score": p["score"] * factor} for p in result["parts"]]}
             who = (row.student, row.problem)
             c.execute(delete(parts).where(parts.c.student == who[0], parts.c.problem == who[1]))
             c.execute(delete(submissions).where(submissions.c.student == who[0], submissions.c.problem == who[1]))

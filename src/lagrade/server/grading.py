@@ -280,6 +280,7 @@ class GradingQueue:
         sub = Submission(att.student, att.problem, Path(f"{att.problem}{att.suffix}"), att.file_hash, att.data)
         job = self.plan.job(sub)
         job["server_id"] = sid
+        job["hints"] = self.plan.assignment.rules.feedback == "hints"  # the course's feedback level
         with self._lock:
             job["plot"] = sid in self._plots
         return job
@@ -337,7 +338,8 @@ class GradingQueue:
             check = check_json(shown, self.problems.get(job["problem"]))
             if plot:
                 check["plot"] = f"/api/v1/submissions/{sid}/plot.png"
-            self.db.finish(sid, result, check, plot)
+            rules = self.plan.assignment.rules
+            self.db.finish(sid, result, check, plot, deadline=rules.deadline_text(), keep=rules.penalty)
             self.graded += 1
         except Exception:
             log.exception("the grade of attempt %s could not be written", sid)

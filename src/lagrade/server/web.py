@@ -133,11 +133,14 @@ async def logout(request: Request):
 
 
 def _problem_context(request: Request, who: Who, pid: str) -> dict:
+    from lagrade.server.rules import rows, standing
+
     server = _server(request)
     p = server.problem(pid)
     return {"title": f"Problem {pid}", "who": who, "pid": pid, "problem": p, "show": server.text("show", pid),
+            "rules": standing(server, who.student, pid, who.instructor),
             "template": server.text("template", pid), "fields": server.fields(pid), "csrf": server.csrf(who),
-            "attempts": server.db.attempts(who.student, pid, limit=20), "result": None, "error": None,
+            "attempts": rows(server, server.db.attempts(who.student, pid, limit=20), who), "result": None, "error": None,
             "values": {}}
 
 
@@ -152,8 +155,9 @@ def problem_page(pid: str, request: Request, attempt: Annotated[int | None, Quer
         att = server.db.attempt(attempt)
         if att is None or att.student != who.student or att.problem != pid:
             raise HTTPException(404, f"no attempt {attempt} of yours at problem {pid}")
-        ctx["result"] = {**att.result, "submission_id": att.id, "state": "graded"} if att.graded else \
-            {"submission_id": att.id, "state": "queued"}
+        from lagrade.server.rules import view
+
+        ctx["result"] = view(server, att, who)
     return _page(request, "problem.html", ctx, cookie=cookie)
 
 
@@ -203,7 +207,8 @@ async def problem_check(pid: str, request: Request):
         ctx["error"] = exc.detail
         return _page(request, "problem.html", ctx, status=exc.status_code)
     ctx["result"] = json.loads(response.body)
-    ctx["attempts"] = server.db.attempts(who.student, pid, limit=20)
+    fresh = _problem_context(request, who, pid)
+    ctx["attempts"], ctx["rules"] = fresh["attempts"], fresh["rules"]
     return _page(request, "problem.html", ctx)
 
 

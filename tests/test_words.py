@@ -1,0 +1,38 @@
+"""The evidence in words for a student; the integrator's settings for the instructor and --json."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from lagrade.cli import main
+from lagrade.words import at_level, in_words
+
+ANSWER = Path(__file__).parent / "answers" / "12.14" / "correct_plain.toml"
+ENGINE = ("correct: equal at every sampled state and trajectories agree over t in [0, 2] (DOP853 at rtol 1e-10) "
+          "(within rtol 1e-06, atol 1e-06, 1545 evaluations, 0.09 s).")
+
+
+def test_agreement_is_said_in_words_for_each_kind():
+    assert in_words(ENGINE, "lagrangian") == ("correct: equal to the true one at every sampled state, and your "
+                                              "Lagrangian gives the same motion as the true one over t in [0, 2].")
+    assert "your equations give the same motion" in in_words(ENGINE, "eom")
+    assert "your Hamiltonian gives" in in_words(ENGINE, "hamiltonian")
+
+
+def test_feedback_levels():
+    said = "Incorrect: the equation for theta1 is wrong. Hint: your term 2*x' is too large. The motion blows up."
+    assert at_level(said, "incorrect", "hints") == said
+    assert at_level(said, "incorrect", "named") == "Incorrect: the equation for theta1 is wrong. The motion blows up."
+    assert at_level(said, "incorrect", "verdict") == "Incorrect."
+    assert at_level("no value bound to 'L'", "missing", "verdict") == "no value bound to 'L'"  # what to fix stays
+
+
+def test_lagrade_check_says_it_in_words_and_json_keeps_the_settings():
+    text = CliRunner().invoke(main, ["check", "12.14", str(ANSWER)]).output
+    flat = " ".join(text.split())
+    assert "gives the same motion as the true one" in flat and "evaluations" not in flat and "DOP853" not in flat
+    out = json.loads(CliRunner().invoke(main, ["check", "12.14", str(ANSWER), "--json"]).output)
+    assert "DOP853" in out["parts"][0]["feedback"] and "evaluations" in out["parts"][0]["feedback"]
