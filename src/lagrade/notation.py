@@ -278,9 +278,13 @@ def parse_math(text: str, coordinates: Sequence[str], known_names: Iterable[str]
         if functions:  # V'(r): Python has no primes; the call is renamed, and read back in _Reader.call
             text = _PRIMED_CALL.sub(lambda m: f"{m.group(1)}{_PRIME}{len(m.group(2))}" if m.group(1) in functions
                                     else m.group(0), text)
+        if "'" in text:  # theta1' and theta1'': a coordinate's rates, as the book writes them
+            text = _primed_coordinates(text, coordinates)
     try:
         tree = parse_limited(text, "answer")
     except RebuildError as exc:
+        if isinstance(text, str) and "'" in text and "not well formed" in str(exc):
+            raise TextAnswerError(_prime_help(text, coordinates)) from None
         raise TextAnswerError(str(exc)) from None
     try:
         return _Reader(coordinates, known_names, functions).top(tree.body)  # type: ignore[attr-defined]
@@ -292,6 +296,34 @@ def parse_math(text: str, coordinates: Sequence[str], known_names: Iterable[str]
         raise TextAnswerError(str(exc)) from None
     except (TypeError, ValueError, ZeroDivisionError, OverflowError, sp.SympifyError) as exc:
         raise TextAnswerError(f"cannot interpret the answer: {str(exc)[:200]}") from None
+
+
+#: a name followed by primes, not inside quotes ('x' is a string) and not called (V'(r) is a function's)
+_PRIMED_NAME = re.compile(r"(?<![\w'\"])([A-Za-z][A-Za-z0-9_]*)('{1,2})(?![\w'\"(])")
+
+
+def _primed_coordinates(text: str, coordinates: Sequence[str]) -> str:
+    """``theta1'`` is ``theta1_d`` and ``theta1''`` is ``theta1_dd``, for a coordinate of the problem."""
+    names = set(coordinates)
+    return _PRIMED_NAME.sub(lambda m: m.group(1) + ("_d" if len(m.group(2)) == 1 else "_dd")
+                            if m.group(1) in names else m.group(0), text)
+
+
+def spellings(coordinate: str) -> str:
+    """The accepted spellings of a coordinate's rates, for a message."""
+    q = coordinate
+    return f"{q}' (also {q}_d, {q}_dot or {q}dot), and {q}'' (also {q}_dd, {q}_ddot or {q}ddot)"
+
+
+def _prime_help(text: str, coordinates: Sequence[str]) -> str:
+    """The one line for a prime that could not be read: where primes are read, and the spellings."""
+    coordinates = [c for c in coordinates if not (c.startswith("p_") and c[2:] in coordinates)]  # not momenta
+    primed = [m.group(1) for m in _PRIMED_NAME.finditer(text) if m.group(1) not in set(coordinates)]
+    example = coordinates[0] if coordinates else "q"
+    where = f"'{primed[0]}' is not a coordinate of this problem, so {primed[0]}' cannot be read; " if primed else ""
+    listed = f" (the coordinates: {', '.join(coordinates)})" if coordinates else ""
+    return (f"answer is not well formed: {where}a prime (') is read after a coordinate only{listed}: "
+            f"its rates are {spellings(example)}")
 
 
 @lru_cache(maxsize=256)
@@ -413,8 +445,23 @@ class _Reader:
             raise TextAnswerError(f"'{name}' is a function of the coordinates; write it with its "
                                   f"{self.functions[name]} argument(s), e.g. {name}(...)")
         if self.known is not None and name not in self.known:
+            rate = self._rate_of(name)
+            if rate is not None:
+                raise TextAnswerError(f"unknown name '{name}': the rates of the coordinate {rate} are written "
+                                      f"{spellings(rate)}")
             raise TextAnswerError(f"unknown name '{name}'{self._hint(name, self._all_names())}")
         return sp.Symbol(name)
+
+    def _rate_of(self, name: str) -> str | None:
+        """The coordinate whose rate ``name`` tries to spell (``thetadot1``, ``dtheta1``, ``theta_1_dot``)."""
+        if not re.search(r"dot|_d|^d", name):
+            return None
+        bare = {c.replace("_", ""): c for c in self.coords}
+        core = re.sub(r"ddot|dot|_dd\b|_d\b|_dd$|_d$", "", name).replace("_", "")
+        for guess in (core, core[1:] if name.startswith("d") else None, core[2:] if name.startswith("dd") else None):
+            if guess and guess in bare:
+                return bare[guess]
+        return None
 
     def _all_names(self) -> list[str]:
         return sorted({"t", "pi", *self.coords, *self.shorthand, *(self.known or ())})
