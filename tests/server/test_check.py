@@ -13,6 +13,7 @@ from click.testing import CliRunner
 from serverkit import GOLDEN, REPO, bearer, expectations, golden, toml_answer
 
 from lagrade.cli import main
+from lagrade.server.tokens import INSTRUCTOR
 
 pytestmark = pytest.mark.slow
 
@@ -97,7 +98,14 @@ def test_the_response_is_what_a_local_check_prints(graded):
         return [{k: re.sub(r"\d+\.\d+ s\b", "_ s", v) if k == "feedback" else v for k, v in p.items() if k not in strip}
                 for p in parts]
 
-    assert same(body["parts"]) == same(mine["parts"])
+    # a student reads the evidence in words (lagrade.words); the instructor's view is --json's, whole
+    from lagrade.words import in_words
+
+    kinds = {p.name: p.kind for p in app.state.server.problems["12.22"].parts}
+    worded = [{**p, "feedback": in_words(p["feedback"], kinds[p["part"]])} for p in mine["parts"]]
+    assert same(body["parts"]) == same(worded)
+    whole = client.get(f"/api/v1/submissions/{body['submission_id']}", headers=bearer(app, INSTRUCTOR)).json()
+    assert same(whole["parts"]) == same(mine["parts"])
 
 
 def test_export_and_report_read_the_server_database(graded):
