@@ -222,6 +222,23 @@ class GeneralFunction(_Strict):
     description: str = Field("", description="what it is, as `lagrade show` prints it")
 
 
+class Figure(_Strict):
+    """The scene's figure (the book's "Fig. P12.14"): its points as functions of the coordinates, drawn at a sample state."""
+
+    points: dict[Annotated[str, Field(pattern=IDENT)], tuple[str, str]] = Field(
+        description="each point (a body, a pivot, a pulley) and its position [x, y] in the coordinates and parameters, "
+                    "y upward")
+    lines: list[tuple[str, str]] = Field([], description="rods, strings and springs: pairs of points joined by a line")
+    fixed: list[str] = Field([], description="points that do not move (drawn as supports)")
+
+    @model_validator(mode="after")
+    def _known_points(self) -> Figure:
+        unknown = sorted(({p for pair in self.lines for p in pair} | set(self.fixed)) - set(self.points))
+        if unknown:
+            raise ValueError(f"figure: lines or fixed name unknown points {unknown}")
+        return self
+
+
 class System(_Strict):
     """One physical system (a scene). Lettered sub-problems and alternative coordinates are systems."""
 
@@ -241,6 +258,7 @@ class System(_Strict):
     horizon: float = Field(2.0, description="time window of trajectory comparisons (and of sampled t)")
     functions: list[GeneralFunction] = Field(
         [], description="functions of the coordinates left general (`V(r)`): the scene and answers may call them")
+    figure: Figure | None = Field(None, description="the scene's figure; without it the coordinates alone are drawn")
 
     @model_validator(mode="after")
     def _scene_is_complete(self) -> System:
@@ -498,7 +516,8 @@ def markdown_tables() -> str:
         return out + [""]
 
     lines: list[str] = []
-    for model in (Problem, Parameter, System, Coordinate, Constraint, GeneralFunction, Part, Alternative, Mistake):
+    for model in (Problem, Parameter, System, Coordinate, Constraint, GeneralFunction, Figure, Part, Alternative,
+                  Mistake):
         lines += rows(model)
     lines += ["| kind | the student gives | correct when | `reference` |", "|---|---|---|---|"]
     lines += [f"| `{name}` | {k.expects} | {k.correct_when} | {k.reference} |" for name, k in KINDS.items()]

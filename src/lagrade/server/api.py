@@ -66,7 +66,22 @@ def problem(pid: str, request: Request) -> dict:
     from lagrade.server.rules import standing
 
     return {"id": pid, "title": p.title, "show": server.text("show", pid), "template": server.text("template", pid),
+            "statement_html": server.statement(pid), "figure": f"/api/v1/problems/{pid}/figure.png",
             "fields": server.fields(pid), "rules": standing(server, who.student, pid, who.instructor)}
+
+
+@router.get("/problems/{pid}/figure.png", response_class=Response,
+            responses={200: {"content": {"image/png": {}}, "description": "the figure"}})
+async def figure(pid: str, request: Request) -> Response:
+    """The figure the statement refers to, drawn from the scene: its bodies at a sample state, each
+    coordinate's positive direction (``lagrade show --figure`` saves it)."""
+    server = _server(request)
+    server.identify(request)
+    server.problem(pid)
+    png = await asyncio.to_thread(server.figure, pid)
+    return Response(png, media_type="image/png", headers={
+        "Cache-Control": "private, max-age=3600", "X-Content-Type-Options": "nosniff",
+        "Content-Security-Policy": "default-src 'none'"})
 
 
 @router.post("/problems/{pid}/check", openapi_extra=_CHECK_BODY, status_code=200,

@@ -68,6 +68,7 @@ class Server:
         # made once, here: the same text for every request
         self._texts = {(command, pid): self._print(command, pid) for pid in self.problems
                        for command in ("show", "template")}
+        self._figures: dict[tuple[str, str], bytes] = {}
 
     def start(self) -> None:
         from lagrade.server.grading import GradingQueue
@@ -95,6 +96,24 @@ class Server:
     def text(self, command: str, pid: str) -> str:
         """What ``lagrade show`` / ``lagrade template`` print for the problem."""
         return self._texts[(command, pid)]
+
+    def statement(self, pid: str) -> str:
+        """The problem as HTML with MathML (:func:`lagrade.statement.statement_html`), made once."""
+        from lagrade.statement import statement_html
+
+        key = ("statement", pid)
+        if key not in self._texts:
+            self._texts[key] = statement_html(self.problems[pid])
+        return self._texts[key]
+
+    def figure(self, pid: str) -> bytes:
+        """The problem's figure drawn from its scene (:func:`lagrade.figure.draw`), a PNG made once."""
+        from lagrade.figure import draw
+
+        key = ("figure", pid)
+        if key not in self._figures:
+            self._figures[key] = draw(self.problems[pid])
+        return self._figures[key]
 
     def _print(self, command: str, pid: str) -> str:
         """What a student's ``lagrade show`` / ``template`` prints (the same functions)."""

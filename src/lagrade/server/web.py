@@ -138,6 +138,7 @@ def _problem_context(request: Request, who: Who, pid: str) -> dict:
     server = _server(request)
     p = server.problem(pid)
     return {"title": f"Problem {pid}", "who": who, "pid": pid, "problem": p, "show": server.text("show", pid),
+            "statement": server.statement(pid),
             "rules": standing(server, who.student, pid, who.instructor),
             "template": server.text("template", pid), "fields": server.fields(pid), "csrf": server.csrf(who),
             "attempts": rows(server, server.db.attempts(who.student, pid, limit=20), who), "result": None, "error": None,
