@@ -67,9 +67,9 @@ def reference_dir() -> Path:
     return _bundled("reference_solutions")
 
 
-NO_DATA = ("no problem data is installed (the lagrade package holds none): check against your course "
-           "server with --server URL --token T, install the problems (pip install lagrade-chapter12, "
-           "for instructors), or name a folder with --problems DIR")
+NO_DATA = ("no problem data is installed here: your course server has the problems; read one with "
+           "lagrade show ID --server URL --token T (template likewise) and check with lagrade check ID "
+           "answer.py --server URL --token T, or name a folder of problem files with --problems DIR")
 
 
 CACHE_ENV = "LAGRADE_CACHE"

@@ -37,13 +37,32 @@ def list_cmd(as_json: bool, problems_dir: tuple[Path, ...]) -> None:
         click.echo(f"{r['id']:>8}  {r['parts']:>2} parts  {r['title']}")
 
 
+server_option = click.option("--server", help="Read the problem from this course server (http://host:8000): no "
+                                              "problem data needed here; see docs/server.md.")
+token_option = click.option("--token", envvar="LAGRADE_TOKEN", help="Your token for --server (also LAGRADE_TOKEN).")
+
+
+def _from_server(server: str, token: str | None, problem_id: str, key: str) -> str:
+    from lagrade.server.client import ClientError, remote_problem
+
+    try:
+        return remote_problem(server, token, problem_id)[key]
+    except (ClientError, KeyError) as exc:
+        raise click.ClickException(str(exc).splitlines()[0] if str(exc) else f"the server gave no {key}") from None
+
+
 @click.command()
 @click.argument("problem_id", required=False)
 @click.option("--schema", type=click.Choice(["json", "markdown"]),
               help="Instead of a problem: the problem-file format (JSON Schema, or the tables of "
                    "docs/authoring-problems.md).")
+@click.option("--figure", "figure_file", type=click.Path(dir_okay=False, path_type=Path),
+              help="Also save the problem's figure, drawn from its scene, as this PNG.")
+@server_option
+@token_option
 @problems_option
-def show(problem_id: str | None, schema: str | None, problems_dir: tuple[Path, ...]) -> None:
+def show(problem_id: str | None, schema: str | None, figure_file: Path | None, server: str | None,
+         token: str | None, problems_dir: tuple[Path, ...]) -> None:
     """Statement, assumptions, symbols to use and the parts asked."""
     if schema:
         from lagrade.spec import Problem, markdown_tables
@@ -52,16 +71,38 @@ def show(problem_id: str | None, schema: str | None, problems_dir: tuple[Path, .
         return
     if problem_id is None:
         raise click.UsageError("give a problem id (lagrade list shows them), or --schema")
+    if server:  # the course server has the problem: nothing of it is needed here
+        click.echo(_from_server(server, token, problem_id, "show"), nl=False)
+        if figure_file is not None:
+            from lagrade.server.client import ClientError, remote_figure
+
+            try:
+                figure_file.write_bytes(remote_figure(server, token, problem_id))
+            except ClientError as exc:
+                raise click.ClickException(str(exc)) from None
+            click.echo(f"figure: {figure_file}", err=True)
+        return
     from lagrade.describe import show_text
 
-    click.echo(show_text(problem_or_usage_error(problem_id, problems_dir)))
+    problem = problem_or_usage_error(problem_id, problems_dir)
+    click.echo(show_text(problem))
+    if figure_file is not None:
+        from lagrade.figure import draw
+
+        figure_file.write_bytes(draw(problem))
+        click.echo(f"figure: {figure_file}", err=True)
 
 
 @click.command()
 @click.argument("problem_id")
+@server_option
+@token_option
 @problems_option
-def template(problem_id: str, problems_dir: tuple[Path, ...]) -> None:
+def template(problem_id: str, server: str | None, token: str | None, problems_dir: tuple[Path, ...]) -> None:
     """A skeleton answer.py with every part as a name to fill."""
+    if server:
+        click.echo(_from_server(server, token, problem_id, "template"), nl=False)
+        return
     from lagrade.describe import template_text
 
     click.echo(template_text(problem_or_usage_error(problem_id, problems_dir)), nl=False)

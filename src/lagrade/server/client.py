@@ -88,6 +88,34 @@ def remote_check(server: str, token: str | None, problem_id: str, answer: Path) 
     return out
 
 
+def _base(server: str) -> str:
+    base = server.rstrip("/")
+    if not base.startswith(("http://", "https://")):
+        raise ClientError(f"--server {server!r}: expected a URL such as http://127.0.0.1:8000")
+    return base
+
+
+def remote_problem(server: str, token: str | None, problem_id: str) -> dict:
+    """The problem as the server's API gives it: what ``lagrade show`` and ``template`` print (``show``,
+    ``template``), its statement as HTML, its figure's address and the assignment's rules."""
+    base = _base(server)
+    return _request(f"{base}/api/v1/problems/{urllib.parse.quote(problem_id, safe='')}", token)[1]
+
+
+def remote_figure(server: str, token: str | None, problem_id: str) -> bytes:
+    """The problem's figure (a PNG), drawn by the server from the scene."""
+    base = _base(server)
+    url = f"{base}/api/v1/problems/{urllib.parse.quote(problem_id, safe='')}/figure.png"
+    headers = {"User-Agent": "lagrade-show", **({"Authorization": f"Bearer {token}"} if token else {})}
+    try:
+        with urllib.request.urlopen(urllib.request.Request(url, headers=headers), timeout=60) as resp:
+            return resp.read()
+    except urllib.error.HTTPError as exc:
+        raise ClientError(f"the server answered {exc.code} for the figure") from None
+    except (urllib.error.URLError, OSError) as exc:
+        raise ClientError(f"cannot reach the server at {url} ({getattr(exc, 'reason', exc)}); check --server") from None
+
+
 def _stored(base: str, token: str | None, problem_id: str, sha256: str) -> int | None:
     """The id of the newest attempt at ``problem_id`` holding exactly this file, if the server stored one."""
     try:
