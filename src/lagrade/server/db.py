@@ -385,8 +385,9 @@ class Database:
             if found is not None:
                 return found, False
             if max_attempts is not None and self._count(c, student, problem) >= max_attempts:
-                raise AttemptsUsed(f"you have made the {max_attempts} attempts at problem {problem} this assignment "
-                                   "allows; your earlier attempts and their grades are kept")
+                raise AttemptsUsed(f"you have made the {max_attempts} attempt{'s' if max_attempts != 1 else ''} at "
+                                   f"problem {problem} this assignment allows; your earlier attempts and their grades "
+                                   "are kept")
             try:
                 with c.begin_nested():
                     new = c.execute(insert(server_submissions).values(
