@@ -177,7 +177,18 @@ class Expected:
     expect: dict[str, float] | None
 
     def score(self, weights: dict[str, float]) -> float:
-        return 0.0 if self.expect is None else sum(weights[p] * f for p, f in self.expect.items())
+        """The file's score: its parts' shares, the extra parts (not asked by the book) left out, as the
+        problem's total leaves them out."""
+        if self.expect is None:
+            return 0.0
+        extra = extra_parts(self.problem)
+        return sum(weights[p] * f for p, f in self.expect.items() if p not in extra)
+
+
+def extra_parts(pid: str) -> set[str]:
+    from lagrade.library import load_problem
+
+    return {p.name for p in load_problem(pid).parts if getattr(p, "extra", False)}
 
 
 def make_class(root: Path, students: int, problems: list[str] = FAST_PROBLEMS, sentinel: str = "/nonexistent",

@@ -67,7 +67,7 @@ def test_errors_are_one_line(graded, live_url, no_problem_data, tmp_path):
 
 def test_the_report_is_a_local_checks(graded, live_url):
     token = issue(graded[0].state.server.secret, "client-report")
-    for path in (GOLDEN / "12.22" / "wrong_sign_of_V.py", GOLDEN / "12.14" / "wrong_uncoupled_frequencies.toml"):
+    for path in (GOLDEN / "12.22" / "wrong_sign_of_V.py", GOLDEN / "12.14" / "wrong_plain_potential_sign.toml"):
         pid = path.parent.name
         local = _run([pid, str(path)])
         remote = _run([pid, str(path), "--server", live_url, "--token", token])

@@ -123,7 +123,7 @@ def test_the_client_alone_checks_against_the_server(wheels, graded, live_url, tm
 
     token = issue(graded[0].state.server.secret, "installed-client")
     answer = tmp_path / "answer.toml"
-    shutil.copyfile(GOLDEN / "12.14" / "wrong_uncoupled_frequencies.toml", answer)
+    shutil.copyfile(GOLDEN / "12.14" / "wrong_plain_potential_sign.toml", answer)
     remote = subprocess.run([str(bin_ / "lagrade"), "check", "12.14", "answer.toml", "--server", live_url,
                              "--token", token], capture_output=True, text=True, env=env, cwd=tmp_path, timeout=600)
     print(remote.stdout, remote.stderr, sep="\n")  # the report, for whoever runs this with -s
