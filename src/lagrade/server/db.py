@@ -69,6 +69,7 @@ submissions = Table(
     Column("stdout", Text, nullable=False, server_default=""), Column("source", Text, nullable=False, server_default=""),
     Column("seconds", Float, nullable=False), Column("graded_at", String(30), nullable=False),
     Column("attempts", Integer, nullable=False, server_default="1"), Column("jail", Text),
+    Column("plot_png", LargeBinary),
     CheckConstraint("outcome IN ('graded', 'failed')"),
 )
 parts = Table(
@@ -254,6 +255,8 @@ class Database:
         with self.engine.begin() as c:
             for table, column, definition in COLUMNS_ADDED:
                 if column not in have[table]:
+                    if definition == "BLOB" and self.engine.dialect.name == "postgresql":
+                        definition = "BYTEA"  # SQLite's BLOB, as PostgreSQL spells it
                     c.execute(text(f"ALTER TABLE {table} ADD COLUMN {column} {definition}"))
 
     def close(self) -> None:
