@@ -50,9 +50,11 @@ def _roster(path: Path | None) -> tuple[str, ...] | None:
 @click.option("--scheduler", help="Grade on an existing Dask cluster instead (tcp://host:8786; needs lagrade[dask]).")
 @click.option("--unsafe-trusted-files", is_flag=True,
               help="Serve even where the OS jail cannot be built (see `lagrade doctor`): never for students.")
+@click.option("--lti", "lti", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="LTI 1.3: a TOML file naming the LMS platforms students launch from (docs/server.md).")
 @problems_option
 def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str, port: int, open_: bool,
-          workers: int, spare_graders: int, scheduler: str | None, unsafe_trusted_files: bool,
+          workers: int, spare_graders: int, scheduler: str | None, unsafe_trusted_files: bool, lti: Path | None,
           problems_dir: tuple[Path, ...]) -> None:
     """Serve the assignment: students check answers on a web page or with `lagrade check --server`."""
     _need_server_extra()
@@ -70,7 +72,7 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     db = db or str(assignment_path.with_name(assignment_path.stem + "-serve.sqlite"))
     config = ServerConfig(assignment=assignment_path, db=db, roster=_roster(roster), open=open_,
                           problems_dirs=problems_dir, workers=workers, scheduler=scheduler,
-                          spare_graders=spare_graders)
+                          spare_graders=spare_graders, lti=lti)
     try:
         app = create_app(config)
     except NotAServerDatabase as exc:
@@ -83,6 +85,8 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     address = "127.0.0.1" if host in ("0.0.0.0", "::") else host
     err.print(banner(db, len(config.roster or ()), open_), soft_wrap=True)
     err.print(f"class page: http://{address}:{port}/login?token={token}", soft_wrap=True)
+    if lti is not None:
+        err.print(f"LTI 1.3: what the LMS needs is at {app.state.lti.url}/lti/config", soft_wrap=True)
     uvicorn.run(app, host=host, port=port, log_level="warning", timeout_graceful_shutdown=10)
 
 

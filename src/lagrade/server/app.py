@@ -21,14 +21,21 @@ from lagrade.server.state import Server
 def create_app(config: ServerConfig, *, grade: bool = True) -> FastAPI:
     """The ASGI app. ``grade=False`` starts no graders (tests of what needs none)."""
     server = Server(config)
+    lti_ = _lti(config, server)
 
     @asynccontextmanager
     async def lifespan(app: FastAPI):
         if grade:
             server.start()
+        if lti_ is not None:  # grades go back to the LMS as they are written
+            if server.queue is not None:
+                server.queue.on_graded = lti_.wake
+            lti_.start()
         try:
             yield
         finally:
+            if lti_ is not None:
+                lti_.stop()
             server.stop()
 
     # the OpenAPI document is served (/openapi.json); the Swagger and ReDoc pages are not: they load
@@ -36,7 +43,12 @@ def create_app(config: ServerConfig, *, grade: bool = True) -> FastAPI:
     app = FastAPI(title="lagrade", version="1", lifespan=lifespan, docs_url=None, redoc_url=None,
                   description="Check answers to the problems of an assignment; the references stay on the server.")
     app.state.server = server
+    app.state.lti = lti_
     app.include_router(api.router)
+    if lti_ is not None:
+        from lagrade.server.lti import router as lti_router
+
+        app.include_router(lti_router)
     app.include_router(web.router)
     app.add_middleware(BodyLimit, max_bytes=config.max_body)
 
@@ -54,6 +66,19 @@ def create_app(config: ServerConfig, *, grade: bool = True) -> FastAPI:
         return web.error_page(request, 422, web.one_line_invalid(exc))
 
     return app
+
+
+def _lti(config: ServerConfig, server: Server):
+    """The LTI 1.3 side (lti.py), when ``config.lti`` names the platforms; None otherwise."""
+    if config.lti is None:
+        return None
+    from lagrade.server.lti import Lti, load_config
+
+    try:
+        return Lti(load_config(config.lti), server)
+    except Exception:
+        server.stop()
+        raise
 
 
 def _api(request: Request) -> bool:

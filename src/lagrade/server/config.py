@@ -40,5 +40,7 @@ class ServerConfig(BaseModel):
     preview_burst: int = Field(30, ge=1)
     #: wall-clock seconds one preview may take in the preview process (then it is killed and restarted)
     preview_seconds: float = Field(5, gt=0)
+    #: LTI 1.3: the platforms (LMSs) this server takes launches from and sends grades to (lti.py)
+    lti: Path | None = None
     #: how long a check request waits for its grade before answering "queued" (202)
     wait_seconds: float = Field(120, gt=0)

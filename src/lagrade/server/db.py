@@ -367,6 +367,15 @@ class Database:
                 self._set_meta(c, "server_secret", value)
         return bytes.fromhex(value)
 
+    def kept(self, key: str, make) -> str:
+        """The value kept in ``meta`` under ``key``, made by ``make()`` the first time (the LTI key)."""
+        with self._write, self.engine.begin() as c:
+            value = self._meta(c, key)
+            if value is None:
+                value = make()
+                self._set_meta(c, key, value)
+        return value
+
     @staticmethod
     def _add_student(c, name: str) -> None:
         if c.execute(select(students.c.student).where(students.c.student == name)).first() is None:

@@ -166,6 +166,8 @@ class GradingQueue:
         self._stopping = False
         self._thread: threading.Thread | None = None
         self.graded = 0
+        #: called with an attempt's id once its grade is written (the LMS grade sender's wake-up)
+        self.on_graded = None
 
     # ------------------------------------------------------------------ from the app
 
@@ -341,6 +343,8 @@ class GradingQueue:
             rules = self.plan.assignment.rules
             self.db.finish(sid, result, check, plot, deadline=rules.deadline_text(), keep=rules.penalty)
             self.graded += 1
+            if self.on_graded is not None:
+                self.on_graded(sid)
         except Exception:
             log.exception("the grade of attempt %s could not be written", sid)
         with self._lock:

@@ -164,7 +164,7 @@ class Server:
 
     def _allowed(self, student: str) -> str:
         if self.roster is not None and student not in self.roster and student != INSTRUCTOR \
-                and not student.startswith("guest-"):
+                and not student.startswith("guest-") and not (self.config.lti and student.startswith("lti-")):
             raise HTTPException(401, f"{student!r} is not on this server's roster; ask your instructor",
                                 headers={"WWW-Authenticate": "Bearer"})
         if student.startswith("guest-") and not self.config.open:
