@@ -79,6 +79,7 @@ class Platform:
         self.links: dict[str, dict] = {}  # resource link id -> problem, line item
         self.scores: list[dict] = []  # what the AGS scores endpoints received: the gradebook
         self.token_requests = 0
+        self.down = False  # the scores endpoints answer 503 (an LMS in maintenance)
         self.app = self._app()
 
     # ------------------------------------------------------------------ what an LMS admin sets up
@@ -86,9 +87,12 @@ class Platform:
     def user(self, login: str, name: str, roles: tuple[str, ...] = (LEARNER,)) -> None:
         self.users[login] = {"name": name, "roles": list(roles)}
 
-    def link(self, link_id: str, problem: str | None) -> str:
-        """A resource link (an assignment in the course) with its line item; returns the line item URL."""
-        self.links[link_id] = {"problem": problem, "lineitem": f"{self.url}/lineitems/{link_id}/lineitem"}
+    def link(self, link_id: str, problem: str | None, target: str | None = None) -> str:
+        """A resource link (an assignment in the course) with its line item; returns the line item URL.
+        ``problem``: its custom parameter ``problem`` (Moodle's way); ``target``: the URL the instructor
+        typed for it instead (Canvas's way), sent as the target link URI."""
+        self.links[link_id] = {"problem": problem, "lineitem": f"{self.url}/lineitems/{link_id}/lineitem",
+                               "target": target}
         return self.links[link_id]["lineitem"]
 
     def start_url(self, login: str, link_id: str) -> str:
@@ -107,6 +111,8 @@ class Platform:
         conf = _Conf(registration=self.registration)
         launch = _Launch(None, conf)
         launch._registration = self.registration
+        if link["target"]:
+            launch.set_launch_url(link["target"])
         launch.set_user_data(login, user["roles"], full_name=user["name"])
         launch.set_resource_link_claim(link_id, title=f"Problem {link['problem']}")
         if link["problem"]:
@@ -136,6 +142,8 @@ class Platform:
         def start(request: Request, user: str, link: str):
             login = _Login(request, conf)
             login.set_lti_message_hint(link=link)
+            if self.links[link]["target"]:
+                login.set_launch_url(self.links[link]["target"])
             return login.initiate_login(user)
 
         @app.get("/authorize")
@@ -177,6 +185,8 @@ class Platform:
                 raise HTTPException(401, f"bad access token: {exc}") from None
             if not allowed:
                 raise HTTPException(403, "the token lacks the score scope")
+            if self.down:
+                raise HTTPException(503, "down for maintenance")
             if request.headers.get("content-type") != "application/vnd.ims.lis.v1.score+json":
                 raise HTTPException(415, "expected application/vnd.ims.lis.v1.score+json")
             self.scores.append({"link": link_id, **json.loads(await request.body())})

@@ -4,6 +4,7 @@ the platform's gradebook (the AGS score it recorded); forged and replayed launch
 
 from __future__ import annotations
 
+import re
 import socket
 import threading
 import time
@@ -84,15 +85,11 @@ def _post(client: httpx.Client, launch: tuple[str, dict[str, str]]) -> httpx.Res
 
 def _signed_in(client: httpx.Client, tool_url: str) -> str | None:
     r = client.get(f"{tool_url}/")
-    import re
-
     m = re.search(r"data-student>([^<]*)<", r.text)
     return m.group(1) if m else None
 
 
 def _csrf(page: str) -> str:
-    import re
-
     return re.search(r'name="csrf" value="([^"]+)"', page).group(1)
 
 
@@ -153,6 +150,40 @@ def test_a_new_grade_replaces_the_one_in_the_lms(lms):
             assert _wait_for(lambda: len([s for s in platform.scores if s["userId"] == "u-emmy"]) >= n)
     first, last = [s for s in platform.scores if s["userId"] == "u-emmy"][-2:]
     assert first["scoreGiven"] == first["scoreMaximum"] and last["scoreGiven"] < last["scoreMaximum"]
+
+
+def test_a_grade_the_lms_could_not_take_is_sent_when_it_is_back(lms):
+    from sqlalchemy import select
+
+    from lagrade.server.lti import lti_links
+
+    platform, tool_url, app = lms
+    lti = app.state.lti
+    platform.user("u-sophie", "Sophie Germain")
+    platform.link("link-down", "12.14")
+    platform.down = True
+    try:
+        with httpx.Client(timeout=150) as browser:
+            _post(browser, _launch(platform, browser, "u-sophie", "link-down"))
+            page = browser.get(f"{tool_url}/p/12.14")
+            answer = tomllib.loads((GOLDEN / "12.14" / "correct_plain.toml").read_text(encoding="utf-8"))
+            r = browser.post(f"{tool_url}/api/v1/problems/12.14/check", json={"answer": answer},
+                             headers={"x-csrf-token": _csrf(page.text)})
+            assert r.status_code == 200, r.text
+
+        def link_error():
+            with app.state.server.db.engine.connect() as c:
+                return c.execute(select(lti_links.c.error).where(lti_links.c.link_id == "link-down")).scalar_one()
+
+        assert "503" in (_wait_for(link_error) or "")  # refused, and kept as not sent
+        assert not [s for s in platform.scores if s["userId"] == "u-sophie"]
+    finally:
+        platform.down = False
+    lti.send_due()  # what the sender's 30 s retry does
+    got = [s for s in platform.scores if s["userId"] == "u-sophie"]
+    assert len(got) == 1 and got[0]["scoreGiven"] == got[0]["scoreMaximum"] > 0
+    assert link_error() is None
+    assert lti.send_due() == 0  # sent once: nothing due now
 
 
 def _forged(platform: Platform, tool_url: str, login: str, link: str, **how) -> tuple[httpx.Response, httpx.Client]:
@@ -251,6 +282,22 @@ def test_a_launch_without_the_browsers_state_cookie_is_refused(lms):
         r = victim.post(action, data=fields)
         assert r.status_code == 401 and "State not found" in r.text
         assert _signed_in(victim, tool_url) is None
+
+
+@pytest.mark.parametrize("problem, target, lands", [
+    ("12.22", None, "/p/12.22"),  # Moodle: the custom parameter problem=12.22
+    (None, "/p/12.22", "/p/12.22"),  # Canvas: the tool URL typed for the assignment
+    (None, None, "/"),  # no problem named: the assignment's index
+])
+def test_the_link_names_the_problem(lms, problem, target, lands):
+    platform, tool_url, _app = lms
+    platform.user("u-link", "Linker")
+    link = f"link-{problem}-{target}"
+    platform.link(link, problem, target=f"{tool_url}{target}" if target else None)
+    with httpx.Client(timeout=60) as browser:
+        r = _post(browser, _launch(platform, browser, "u-link", link))
+        assert r.status_code == 200, r.text
+        assert f"url={lands}\"" in r.text
 
 
 def test_an_instructor_launch_opens_the_class_page(lms):

@@ -72,10 +72,13 @@ def _lti(config: ServerConfig, server: Server):
     """The LTI 1.3 side (lti.py), when ``config.lti`` names the platforms; None otherwise."""
     if config.lti is None:
         return None
-    from lagrade.server.lti import Lti, load_config
-
     try:
+        from lagrade.server.lti import Lti, load_config
+
         return Lti(load_config(config.lti), server)
+    except ImportError as exc:
+        server.stop()
+        raise ValueError(f"--lti needs pylti1p3 ({exc.name} is missing): pip install 'lagrade[server]'") from None
     except Exception:
         server.stop()
         raise

@@ -43,7 +43,21 @@ from urllib.parse import urlsplit
 from fastapi import APIRouter, HTTPException, Request
 from fastapi.responses import HTMLResponse, JSONResponse, RedirectResponse, Response
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
-from sqlalchemy import Column, Float, Integer, MetaData, String, Table, Text, delete, insert, select, update
+from sqlalchemy import (
+    Column,
+    Float,
+    Integer,
+    MetaData,
+    String,
+    Table,
+    Text,
+    delete,
+    func,
+    insert,
+    or_,
+    select,
+    update,
+)
 
 log = logging.getLogger("lagrade.server.lti")
 
@@ -337,6 +351,7 @@ class Lti:
         self._stopping = False
         self._thread: threading.Thread | None = None
         self._connectors: dict[tuple[str, str], Any] = {}
+        self._sending = threading.Lock()
         self.sent = 0
 
     # ------------------------------------------------------------------ the scores thread
@@ -368,20 +383,24 @@ class Lti:
 
     def send_due(self) -> int:
         """POST the score of every link whose problem has a newer graded attempt than the one sent."""
+        with self._sending:  # one pass at a time: a grade is sent once
+            return self._send_due()
+
+    def _send_due(self) -> int:
         from lagrade.server.db import server_submissions
 
+        latest = (select(server_submissions.c.student, server_submissions.c.problem,
+                         func.max(server_submissions.c.id).label("latest"))
+                  .where(server_submissions.c.state == "graded",
+                         server_submissions.c.student.in_(select(lti_links.c.student)))
+                  .group_by(server_submissions.c.student, server_submissions.c.problem).subquery())
+        q = (select(lti_links, latest.c.latest)
+             .join(latest, (latest.c.student == lti_links.c.student) & (latest.c.problem == lti_links.c.problem))
+             .where(lti_links.c.ags.is_not(None),
+                    or_(lti_links.c.sent_attempt.is_(None), lti_links.c.sent_attempt != latest.c.latest)))
         sent = 0
         with self.db.engine.connect() as c:
-            links = c.execute(select(lti_links).where(lti_links.c.problem.is_not(None),
-                                                      lti_links.c.ags.is_not(None))).fetchall()
-            due = []
-            for link in links:
-                latest = c.execute(select(server_submissions.c.id).where(
-                    server_submissions.c.student == link.student, server_submissions.c.problem == link.problem,
-                    server_submissions.c.state == "graded").order_by(server_submissions.c.id.desc()).limit(1)
-                ).scalar_one_or_none()
-                if latest is not None and latest != link.sent_attempt:
-                    due.append((link, latest))
+            due = [(row, row.latest) for row in c.execute(q)]
         for link, attempt in due:
             try:
                 given, maximum, comment = self._points(link.student, link.problem)
