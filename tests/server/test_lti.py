@@ -124,7 +124,8 @@ def test_launch_signs_in_and_the_grade_reaches_the_lms_gradebook(lms):
         assert r.status_code == 200, r.text
         assert r.json()["outcome"] == "graded"
 
-    got = _wait_for(lambda: [s for s in platform.scores if s["userId"] == "u-ada"])
+    # within 20 s: the grade wakes the sender (its own retry comes only every 30 s)
+    got = _wait_for(lambda: [s for s in platform.scores if s["userId"] == "u-ada"], seconds=20)
     assert got, f"no score reached the LMS (token requests: {platform.token_requests})"
     score = got[-1]
     assert score["link"] == "link-1214" and lineitem.endswith("/link-1214/lineitem")
