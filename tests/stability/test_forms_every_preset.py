@@ -19,11 +19,15 @@ from lagrade.library import load_problem, problem_ids
 PRESETS = ("fast", "default", "strict")
 
 
+#: Parts of a scene with a general function (V(r), U(xp, yp): 12.26, 12.36, 12.39, 12.40) are left to
+#: tests/test_general_functions.py: their derived reference is the problem's concrete stand-in, which an
+#: answer earns only half for (a special case, issue 33).
 def _eom_parts():
     for pid in problem_ids():
         problem = load_problem(pid)
         for part in problem.parts:
-            if part.kind == "eom" and not part.linearized and part.reference is None:
+            if part.kind == "eom" and not part.linearized and part.reference is None \
+                    and not problem.system(part.system).functions:
                 yield pytest.param(pid, part.name, id=f"{pid}:{part.name}")
 
 
@@ -76,7 +80,7 @@ def _lagrangian_parts():
     for pid in problem_ids():
         problem = load_problem(pid)
         for part in problem.parts:
-            if part.kind == "lagrangian" and part.reference is None:
+            if part.kind == "lagrangian" and part.reference is None and not problem.system(part.system).functions:
                 yield pytest.param(pid, part.name, id=f"{pid}:{part.name}")
 
 
