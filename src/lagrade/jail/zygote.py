@@ -20,7 +20,9 @@ from __future__ import annotations
 import atexit
 import json
 import os
+import select
 import shutil
+import signal
 import socket
 import struct
 import subprocess
@@ -267,14 +269,30 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
     count = 0
     inside = "mount" in active
     as_root = os.geteuid() == 0 and not kernel.in_user_namespace()
+    # A child is reaped as soon as it ends, not only when the next spawn comes: a child nobody asks
+    # about (its grading ran out of time) that ends after the last request would otherwise stay a
+    # zombie for as long as the zygote lives, and so would any orphan handed to it as PID 1. The
+    # loop sleeps in poll() on the socket and on the byte SIGCHLD's wake-up writes (no handler work
+    # in signal context: a wait4(-1) there could take the status a "reap" request is waiting for).
+    wake_r, wake_w = os.pipe2(os.O_NONBLOCK | os.O_CLOEXEC)
+    signal.set_wakeup_fd(wake_w, warn_on_full_buffer=False)
+    signal.signal(signal.SIGCHLD, lambda *_: None)
+    poller = select.poll()
+    poller.register(sock, select.POLLIN)
+    poller.register(wake_r, select.POLLIN)
     while True:
+        _reap_finished(done, workdirs)
+        ready = {fd for fd, _ in poller.poll()}
+        if wake_r in ready:
+            _drain(wake_r)
+        if sock.fileno() not in ready:
+            continue
         try:
             request, fds = _recv(sock)
         except (EOFError, OSError, ValueError):
             return
         try:
             if request.get("op") == "spawn":
-                _reap_finished(done, workdirs)
                 count += 1
                 uid = kernel.JAIL_UID_BASE + count % 1_000_000 if "uid" in active and as_root else None
                 workdir = f"{kernel.JAIL_WORK}/{count}" if inside else tempfile.mkdtemp(prefix="lagrade-answer-")
@@ -287,6 +305,10 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
                 pid = os.fork()
                 if pid == 0:  # the child: never returns
                     sock.close()
+                    signal.set_wakeup_fd(-1)
+                    signal.signal(signal.SIGCHLD, signal.SIG_DFL)
+                    os.close(wake_r)
+                    os.close(wake_w)
                     child_code.child_main(request["child"], workdir, result_w, out_w,
                                        layers=active, uid=uid, readable=readable, vm_size=vm)
                 workdirs[pid] = workdir
@@ -307,9 +329,17 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
         _send(sock, reply)
 
 
+def _drain(fd: int) -> None:
+    try:
+        while os.read(fd, 4096):
+            pass
+    except BlockingIOError:
+        pass
+
+
 def _reap_finished(done: dict[int, tuple[int, float]], workdirs: dict[int, str]) -> None:
     """Reap every child that has ended (a grading that ran out of time never asks), keeping its
-    status for when the grader asks."""
+    status for when the grader asks; called whenever SIGCHLD wakes the zygote."""
     while True:
         try:
             pid, status, usage = os.wait4(-1, os.WNOHANG)
