@@ -69,12 +69,24 @@ def pytest_collection_modifyitems(config, items):
             for key, (seconds, _why) in TIMEOUTS.items():
                 if item.nodeid.startswith(key):
                     item.add_marker(pytest.mark.timeout(seconds))
+        marker = item.get_closest_marker("timeout")
+        if marker is not None:
+            seconds = marker.args[0] if marker.args else marker.kwargs.get("timeout")
+            if not (isinstance(seconds, (int, float)) and seconds > 0):
+                raise pytest.UsageError(f"{item.nodeid}: timeout {seconds!r} disables the hang guard; give it a number of seconds")
 
 
 def pytest_configure(config):
     """A private disk cache per session (inherited by the CLI subprocesses the tests start): the suite
     never reads a developer's cache, and exercises both cold and warm checks as it goes."""
     global _CACHE
+    # Without the plugin the ``timeout`` setting is silently ignored and a hang hangs the run (a venv
+    # installed without the test extra had none); refuse to run instead.
+    if not config.pluginmanager.hasplugin("timeout"):
+        raise pytest.UsageError("pytest-timeout is not installed: every test needs its timeout "
+                                "(pip install -e '.[test]')")
+    if float(config.getini("timeout") or 0) <= 0:
+        raise pytest.UsageError("the global test timeout is 0 or unset: set `timeout` in pyproject.toml")
     if "LAGRADE_CACHE" not in os.environ:
         _CACHE = tempfile.mkdtemp(prefix="lagrade-test-cache-")
         os.environ["LAGRADE_CACHE"] = _CACHE
