@@ -107,19 +107,19 @@ def test_python_containers_and_dummy():
     ("", "not well formed"),
 ])
 def test_rejections(text, fragment):
-    start = time.monotonic()
+    start = time.process_time()
     with pytest.raises(RebuildError, match=None) as info:
         rebuild_srepr(text)
     assert fragment in str(info.value), str(info.value)
-    assert time.monotonic() - start < 1
+    assert time.process_time() - start < 1
 
 
 def test_nested_exponent_tower_is_fast():
     text = "Pow(Integer(10), " * 50 + "Integer(10)" + ")" * 50
-    start = time.monotonic()
+    start = time.process_time()
     with pytest.raises(RebuildError):
         rebuild_srepr(text)
-    assert time.monotonic() - start < 1
+    assert time.process_time() - start < 1
 
 
 def test_many_big_integer_products_are_bounded():
@@ -273,11 +273,11 @@ def _chain(tag, n):
     ([["Const", "pi"]] * (MAX_NODES + 1), "too large"),
 ])
 def test_node_rejections(nodes, fragment):
-    start = time.monotonic()
+    start = time.process_time()
     with pytest.raises(RebuildError) as info:
         rebuild_nodes(nodes)
     assert fragment in str(info.value), str(info.value)
-    assert time.monotonic() - start < 1
+    assert time.process_time() - start < 1
 
 
 def test_encoded_expr_carries_nodes_or_srepr_not_both():
