@@ -39,6 +39,14 @@ class PartResult(BaseModel):
                                     description="for instructors: the exact point and the enclosure that prove a "
                                                 "rejection; never serialized (the enclosure is a difference from "
                                                 "the reference)")
+    confirmed: bool | None = Field(default=None, description="a rejection by the trajectory comparison: true when "
+                                   "the same comparison at a 100x finer integration tolerance separates too and the "
+                                   "integration's error estimate is below a tenth of the separation, false when not "
+                                   "(then `review` says so); null otherwise")
+    trajectory_evidence: str | None = Field(default=None, description="for instructors (`lagrade check --json`, the "
+                                            "instructor's view; hidden from a student's): the separation, the "
+                                            "integration's error estimate at that time and the separation at the "
+                                            "finer tolerance, in units of the comparison tolerance")
     detail: str | None = Field(default=None, exclude=True,
                                description="for instructors: the engine's traceback of an `error`; never "
                                            "serialized, so never in what a student is shown")

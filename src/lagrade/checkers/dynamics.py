@@ -29,7 +29,7 @@ from lagrade.checkers.base import (
 from lagrade.compare.certify import Certificate, certify, outside_span, sign_change, zero_at
 from lagrade.compare.equations import CompiledRows, analyse_rows
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
-from lagrade.compare.trajectory import Comparison, compare_runs
+from lagrade.compare.trajectory import Comparison, compare_runs, confirm_refutation
 from lagrade.effects import machinery
 from lagrade.numeric import (
     CompiledRates,
@@ -42,6 +42,7 @@ from lagrade.numeric import (
 from lagrade.reference import Mechanics, split_energy
 from lagrade.result import PartResult
 from lagrade.sampling import (
+    Points,
     rng_for,
     sample_points,
     state_arrays,
@@ -80,6 +81,8 @@ def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc:
     comparison = compare_runs(run.student, run.reference, run.y0, run.labels, mech.system.horizon, ctx.accuracy,
                               events=run.events, student_events=run.student_events, reference_key=run.key,
                               store=mech.runs)
+    comparison.confirm = lambda: confirm_refutation(comparison, run.student, run.reference, run.y0, ctx.accuracy,
+                                                    run.events, run.student_events)
     stu, ref = run.student, run.reference
     if run.switching:   # a picture integrates without events: the exact laws, not branches left by the run
         stu, ref = stu.exact, ref.exact
@@ -175,6 +178,8 @@ def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rate
         events, stu_events, key = [], None, ("hamilton", tuple(part.symbols))
     comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy, events=events,
                               student_events=stu_events, reference_key=key, store=mech.runs)
+    comparison.confirm = lambda stu=stu, ref=ref: confirm_refutation(comparison, stu, ref, y0, ctx.accuracy, events,
+                                                                      stu_events)
     if models is not None:   # a picture integrates without events: the exact laws
         stu, ref = stu.exact, ref.exact
     comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
@@ -257,14 +262,31 @@ def _decide(ctx: Context, part: Part, proof: bool | None, traj: Comparison | Non
         return res
     if traj is not None and traj.decisive:
         acc = ctx.accuracy
-        return graded(part, 0.0, "trajectory",
-                      "Incorrect: your answer agrees with the right one at every sampled state to about "
-                      f"{acc.sample_rtol:g} (relative), but not exactly: {traj.describe()} (beyond the "
-                      f"{acc.name} comparison tolerance, rtol {acc.compare_rtol:g}). A constant or coefficient "
-                      "slightly off (a rounded number, say) does this.")
+        res = graded(part, 0.0, "trajectory",
+                     "Incorrect: your answer agrees with the right one at every sampled state (in the sampling "
+                     f"range and along the true motion) to about {acc.sample_rtol:g} (relative), but not exactly: "
+                     f"{traj.describe()} (beyond the {acc.name} comparison tolerance, rtol {acc.compare_rtol:g}). "
+                     "A constant or coefficient slightly off (a rounded number, say) does this.")
+        return _with_trajectory_evidence(res, traj)
     res = graded(part, 1.0, "numeric", f"correct: equal at every sampled state.{extra}")
     why = traj.describe() if traj is not None else "the answer's motion could not be integrated"
     res.review = f"decided by the sampled states alone: no symbolic proof, and no trajectory evidence ({why})"
+    return res
+
+
+def _with_trajectory_evidence(res: PartResult, traj: Comparison) -> PartResult:
+    """A rejection the trajectory comparison decided carries what it rests on (`confirm_refutation`);
+    one the finer tolerance does not confirm is flagged for review, never a silent reject."""
+    if traj.confirm is not None and traj.confirmed is None:
+        try:
+            traj.confirm()
+        except Exception as exc:  # noqa: BLE001  (evidence about evidence: its failure is said)
+            traj.confirmed, traj.evidence = False, f"not confirmed: the confirmation failed ({exc})"
+    res.confirmed = bool(traj.confirmed)
+    res.trajectory_evidence = traj.evidence
+    if not res.confirmed:
+        res.review = ("rejected by the trajectory comparison alone, and the comparison at a 100x finer integration "
+                      "tolerance did not confirm it (the evidence is in trajectory_evidence)")
     return res
 
 
@@ -298,6 +320,102 @@ def _try(fn: Callable[[], Comparison]) -> Comparison | None:
         return fn()
     except Exception:  # noqa: BLE001
         return None
+
+
+# ----------------------------------------------------------------------------- states along the motion
+
+#: states taken along each reference trajectory (from its stored samples) where the equations must agree
+MOTION_STATES = 16
+#: how a rejection at those states is worded (and told from one at the box samples)
+ALONG_MOTION = "at states the true motion reaches beyond the range states are sampled from"
+
+
+def _motion_points(ctx: Context, mech: Mechanics, part: Part, traj: Comparison | None, phase: bool = False):
+    """The states the reference motion visits (its stored samples inside the compared window, beyond the
+    sampling box too), with its trajectories' parameters and symbols and the reference dynamics there;
+    None without a reference motion or where the scene switches (a friction's branch at a stuck state is
+    the integrator's, not the equations'). Any state is a valid test of equations, so neither chaos nor
+    the integration's error makes these states less fit. ``phase``: the run is in (q, p)."""
+    if traj is None or traj.reference_y is None or traj.reference_t is None or machinery(mech).switching:
+        return None
+    t, y = traj.reference_t, traj.reference_y
+    if t.size < 2:
+        return None
+    n, K = len(mech.names), y.shape[1]
+    _, _, params, extra = _trajectory_inits(ctx, mech, part)
+    idx = np.unique(np.linspace(1, t.size - 1, min(MOTION_STATES, t.size - 1)).round().astype(int))
+    m = idx.size
+    Y = y[:, :, idx].reshape(y.shape[0], K * m)       # column k*m + j: trajectory k, time idx[j]
+    times = np.tile(t[idx], K)
+    stop = traj.reference_stop if traj.reference_stop is not None else np.full(K, np.inf)
+    live = (times <= np.repeat(stop, m) + 1e-12) & np.isfinite(Y).all(axis=0)
+    if not live.any():
+        return None
+    P = np.repeat(params, m, axis=1)[:, live]
+    E = np.repeat(extra, m, axis=1)[:, live]
+    Y, times = Y[:, live], times[live]
+    q = Y[:n]
+    with np.errstate(all="ignore"):
+        qd = mech.velocities(q, Y[n:], times, P) if phase else Y[n:]
+    vals: dict[sp.Symbol, np.ndarray] = {T: times}
+    vals.update(zip(mech.params, P))
+    vals.update((sp.Symbol(s), v) for s, v in zip(part.symbols, E))
+    vals.update(zip(mech.s.q, q))
+    vals.update(zip(mech.s.qd, np.asarray(qd, dtype=float).reshape(n, -1)))
+    vals.update((a, np.zeros(times.size)) for a in mech.s.qdd)
+    with np.errstate(all="ignore"):
+        pts = with_reference_dynamics(mech, Points(vals, int(times.size)))
+    if phase:
+        pts.values.update(zip(mech.s.p, Y[n:]))
+    return pts
+
+
+def _along_motion(ctx: Context, mech: Mechanics, part: Part, traj: Comparison | None, compiled: CompiledRows,
+                  labels: list[str], phase: bool = False):
+    """The rows at the states the reference motion visits, with the tolerance of the sampled states:
+    (analysis, points, argument values, true rates) when some row does not hold there, else None. A
+    state where the student's rows or the true rates are not finite is left out (an undefined value is
+    the trajectory comparison's to judge)."""
+    pts = _motion_points(ctx, mech, part, traj, phase)
+    if pts is None:
+        return None
+    extra = [sp.Symbol(s) for s in part.symbols]
+    velocity = mech.s.p if phase else mech.s.qd
+    args = [*mech.s.q, *velocity, T, *mech.params, *extra]
+    q, qd, t, params = state_arrays(mech, pts)
+    with np.errstate(all="ignore"):
+        truth = mech.hamilton_rates(q, np.array(pts.args(mech.s.p)), t, params) if phase \
+            else np.array(pts.args(mech.s.qdd))
+        g = compiled.values(pts.args(args), truth)
+    ok = np.isfinite(g).all(axis=0) & np.isfinite(truth).all(axis=0)
+    if not ok.any():
+        return None
+    pts = Points({s: np.asarray(v)[ok] if np.ndim(v) else v for s, v in pts.values.items()}, int(ok.sum()))
+    truth = truth[:, ok]
+    argv = pts.args(args)
+    with np.errstate(all="ignore"):
+        an = analyse_rows(compiled, argv, truth, labels, rtol=ctx.accuracy.sample_rtol)
+    return (an, pts, argv, truth) if an.wrong else None
+
+
+def _motion_refutation(ctx: Context, mech: Mechanics, part: Part, traj: Comparison | None, rows: list[sp.Expr],
+                       phase: bool, what: str) -> PartResult | None:
+    """An L or H accepted at the sampled states whose equations (Lagrange's or Hamilton's) do not hold
+    at states the true motion visits: the rejection, certified like one at the sampled states."""
+    if traj is None or traj.reference_y is None or machinery(mech).switching:
+        return None
+    extra = [sp.Symbol(s) for s in part.symbols]
+    unknowns = [*mech.s.qd, *mech.s.pd] if phase else list(mech.s.qdd)
+    args = [*mech.s.q, *(mech.s.p if phase else mech.s.qd), T, *mech.params, *extra]
+    labels = [*(f"{x}'" for x in mech.names), *(f"p_{x}'" for x in mech.names)] if phase else list(mech.names)
+    off = _along_motion(ctx, mech, part, traj, CompiledRows(rows, unknowns, args), labels, phase)
+    if off is None:
+        return None
+    an, pts, argv, truth = off
+    _certify_rows(mech, rows, an, CompiledRows(rows, unknowns, args), argv, truth, pts,
+                  "rates" if phase else "accelerations", **({"phase": True} if phase else {"truth": True}))
+    return _wrong(part, 0.0, f"Incorrect: {what} agree with the true ones at the sampled states but not "
+                  f"{ALONG_MOTION}.", traj)
 
 
 # ----------------------------------------------------------------------------- the Lagrangian
@@ -358,6 +476,10 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
             ctx, lambda: proves_all_zero([a - b for a, b in zip(mech.lagrange_rows(L_s), mech.EL)],
                                          ctx.symbolic_seconds, ctx.positive),
             lambda: _trajectory_lagrange(ctx, mech, part, student_acc, student_rows))
+        off = None if proof else _motion_refutation(ctx, mech, part, traj, student_rows(), False,
+                                                    "the Lagrange equations your L gives")
+        if off is not None:
+            return off
         args = [*mech.s.q, *mech.s.qd, T, *mech.params]
         diff = evaluate([L_s - mech.L], args, pts.args(args))[0]
         constant = all(np.allclose(diff[g * per:(g + 1) * per], diff[g * per], rtol=1e-8,
@@ -578,21 +700,26 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     def student_acc() -> Vectorized:
         return compiled.solver
 
+    traj, where = None, ""
     if an.fraction >= 1.0:
         proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
                                lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows))
-        return _decide(ctx, part, proof, traj)
+        off = None if proof else _along_motion(ctx, mech, part, traj, compiled, list(mech.names))
+        if off is None:
+            return _decide(ctx, part, proof, traj)
+        an, pts, argv, truth = off   # agree on the box, not where the motion goes: decided there
+        where = f" {ALONG_MOTION.replace('the true motion', 'it')}"
     _certify_rows(mech, rows, an, compiled, argv, truth, pts, "accelerations", truth=True)
     _relabel(an, compiled, mech, pts, args, truth)
     named = _eom_mistake(part, mech, compiled, pts.args(args), list(mech.names))
     problems = [] if named is None else [named.rstrip(".")]
     for i in an.wrong if named is None else []:
         if lams:  # the rows are the student's after elimination: their numbers would not be the student's
-            where = f"for {an.labels[i]}''" if an.labels[i] != "none" else "with no acceleration in it"
-            problems.append(f"the equation {where} does not hold for the true motion")
+            which = f"for {an.labels[i]}''" if an.labels[i] != "none" else "with no acceleration in it"
+            problems.append(f"the equation {which} does not hold for the true motion{where}")
             continue
-        where = f"the one mainly for {an.labels[i]}''" if an.labels[i] != "none" else "it has no acceleration in it"
-        problems.append(f"equation {i + 1} ({where}) does not hold for the true motion")
+        which = f"the one mainly for {an.labels[i]}''" if an.labels[i] != "none" else "it has no acceleration in it"
+        problems.append(f"equation {i + 1} ({which}) does not hold for the true motion{where}")
     if an.vanishing_factor:
         problems.append("your equations hold, but one is multiplied by a factor that becomes zero within "
                         "the problem's range (a velocity, say, as in d/dt of the energy): where it does, they "
@@ -602,8 +729,8 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
                         f"an equation is missing or repeated")
     if lams and problems:
         problems[0] = f"once the multipliers ({', '.join(lams)}) are eliminated, {problems[0]}"
-    traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows)) \
-        if len(rows) >= an.n else None
+    if traj is None and len(rows) >= an.n:
+        traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows))
     return _wrong(part, an.fraction, named or _sentence(problems), traj, ctx.credit)
 
 
@@ -892,6 +1019,10 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
                                    ctx.symbolic_seconds, ctx.positive)
 
         proof, traj = _confirm(ctx, prove, lambda: _trajectory_hamilton(ctx, mech, part, student_rates, student_rows))
+        off = None if proof else _motion_refutation(ctx, mech, part, traj, student_rows(), True,
+                                                    "Hamilton's equations your H gives")
+        if off is not None:
+            return off
         note = "" if np.all(np.abs(diff) <= tol) else "It differs from the usual H by a function of t only."
         return _decide(ctx, part, proof, traj, note)
     _certify_hamiltonian(mech, H_s, pts)
@@ -986,17 +1117,22 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
     def student_rates() -> Vectorized:
         return compiled.solver
 
+    traj, where = None, ""
     if an.fraction >= 1.0:
         traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, lambda: rows))
-        return _decide(ctx, part, None, traj)
+        off = _along_motion(ctx, mech, part, traj, compiled, labels, phase=True)
+        if off is None:
+            return _decide(ctx, part, None, traj)
+        an, pts, _, truth = off   # agree on the box, not where the motion goes: decided there
+        where = f" {ALONG_MOTION.replace('the true motion', 'it')}"
     _certify_rows(mech, rows, an, compiled, pts.args(args), truth, pts, "rates", phase=True)
-    problems = [f"equation {i + 1} (for {an.labels[i]}) does not hold for the true motion" for i in an.wrong]
+    problems = [f"equation {i + 1} (for {an.labels[i]}) does not hold for the true motion{where}" for i in an.wrong]
     if an.vanishing_factor:
         problems.append("your equations hold, but one is multiplied by a factor that becomes zero within "
                         "the problem's range: where it does, they no longer determine the rates; divide it out")
     elif an.rank < an.n and not an.wrong:
         problems.append(f"your equations determine only {an.rank} of the {an.n} rates "
                         f"({', '.join(labels)}): Hamilton's equations are 2n first-order equations")
-    traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, lambda: rows)) \
-        if len(rows) >= an.n else None
+    if traj is None and len(rows) >= an.n:
+        traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, lambda: rows))
     return _wrong(part, an.fraction, _sentence(problems), traj, ctx.credit)

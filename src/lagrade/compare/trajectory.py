@@ -40,7 +40,7 @@ from __future__ import annotations
 import os
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -560,6 +560,18 @@ class Comparison:
     why_window: str = ""                 # chaos (measured FTLE) or stiffness budget
     ftle: float | None = None
     decisive: bool = False
+    #: the reference motion's stored states inside the window: times (T,), states (dim, K, T), and per
+    #: trajectory the time up to which it is valid; the states whose equations must agree
+    #: (`checkers.dynamics`'s motion samples), not shown to anyone
+    reference_t: np.ndarray | None = field(default=None, repr=False)
+    reference_y: np.ndarray | None = field(default=None, repr=False)
+    reference_stop: np.ndarray | None = field(default=None, repr=False)
+    #: for a decisive refutation, what it rests on (`confirm_refutation`): instructors only
+    student_y: np.ndarray | None = field(default=None, repr=False)
+    evidence: str | None = None
+    confirmed: bool | None = None
+    #: ``confirm()`` (set by the checker that made the comparison): `confirm_refutation` with its inputs
+    confirm: Callable[[], None] | None = field(default=None, repr=False)
 
     def describe(self) -> str:
         at = ""
@@ -662,6 +674,7 @@ def _compare_to_reference(student: Rates, ref: Run, y0: np.ndarray, labels: list
     keep = ref.t <= window + 1e-12
     ref = Run(ref.t[keep], ref.y[..., keep], ref.ok, ref.message, ref.rhs_evals, ref.seconds, ref.method,
               ref.t_stop, ref.events, ref.stiffness, window)
+    common.update(reference_t=ref.t, reference_y=ref.y, reference_stop=ref.t_stop)
     stu = integrate(student, y0, window, acc, method=method, events=events, t_eval=ref.t)
     common["seconds"] += stu.seconds
     common["rhs_evals"] += stu.rhs_evals
@@ -680,7 +693,7 @@ def _compare_to_reference(student: Rates, ref: Run, y0: np.ndarray, labels: list
         # both motions finite where they first differ: a real difference, not a motion lost
         decisive = bool(np.isfinite(stu.y[..., first_t]).all() and np.isfinite(ref.y[..., first_t]).all())
         return Comparison(False, horizon, float(ref.t[first_t]), labels[comp], float(err.max()),
-                          decisive=decisive, **common)
+                          decisive=decisive, student_y=stu.y[..., :n], **common)
     return Comparison(False, horizon, float(stu.t[-1]) if stu.t.size else 0.0, "the motion",
                       note=cannot_integrate(student, y0, labels, stu), **common)
 
@@ -705,3 +718,58 @@ def cannot_integrate(student: Rates, y0: np.ndarray, labels: list[str], run: Run
         return "the motion your equations give changes too fast to be followed over the time compared"
     return (f"your equations cannot be integrated beyond t = {t:.3g}: the motion they give becomes infinitely "
             "fast or undefined there")
+
+
+#: the second tolerance of a refutation's confirmation: the integration's rtol and atol divided by this
+CONFIRM_FACTOR = 100.0
+
+
+def confirm_refutation(comparison: Comparison, student: Rates, reference: Rates, y0: np.ndarray, acc: Accuracy,
+                       events: Sequence[BatchedEvent] = (), student_events: Sequence[BatchedEvent] | None = None
+                       ) -> None:
+    """What a decisive refutation rests on, measured: both motions integrated again at the integration
+    tolerances / `CONFIRM_FACTOR` (same method, same window, same times), giving at the separation time
+    the separation in units of the comparison tolerance, the integration's error estimate there (how
+    far the runs at the two tolerances differ, reference and student added) and the separation at the
+    finer tolerance. Confirmed when the finer comparison also separates there and the error estimate is
+    below a tenth of the separation; sets ``comparison.evidence`` (instructors only: magnitudes of a
+    difference from the true motion) and ``comparison.confirmed``."""
+    c = comparison
+    if not c.decisive or c.reference_t is None or c.student_y is None or c.separation_time is None:
+        return
+    fine = replace(acc, rtol=acc.rtol / CONFIRM_FACTOR, atol=acc.atol / CONFIRM_FACTOR,
+                   max_rhs_evals=int(3 * acc.max_rhs_evals))
+    times = c.reference_t[: c.student_y.shape[-1]]
+    window = float(times[-1])
+    method = c.method or "DOP853"
+    try:
+        ref_f = integrate(reference, y0, window, fine, method=method, events=events, t_eval=times)
+        stu_f = integrate(student, y0, window, fine, method=method,
+                          events=events if student_events is None else student_events, t_eval=times)
+    except Exception as exc:  # noqa: BLE001  (the confirmation is evidence; its failure is said, not raised)
+        c.confirmed, c.evidence = False, f"not confirmed: the integration at rtol {fine.rtol:g} failed ({exc})"
+        return
+    i = int(np.searchsorted(times, c.separation_time - 1e-12))
+    m = min(ref_f.y.shape[-1], stu_f.y.shape[-1])
+    if i >= m:
+        c.confirmed = False
+        c.evidence = (f"not confirmed: at rtol {fine.rtol:g} the motions could not be followed to the separation "
+                      f"time t = {c.separation_time:.3g} ({ref_f.message or stu_f.message})")
+        return
+    live = (c.reference_stop >= c.separation_time - 1e-12) if c.reference_stop is not None \
+        else np.ones(y0.shape[1], dtype=bool)   # a trajectory stopped before (an event) is not compared there
+    ref_c, stu_c = c.reference_y[:, live, i], c.student_y[:, live, i]
+    ref_f = replace(ref_f, y=ref_f.y[:, live])
+    stu_f = replace(stu_f, y=stu_f.y[:, live])
+    scale = acc.compare_atol + acc.compare_rtol * np.abs(ref_c)
+    with np.errstate(all="ignore"):
+        separation = float(np.nanmax(np.abs(stu_c - ref_c) / scale))
+        estimate = float(np.nanmax((np.abs(ref_c - ref_f.y[..., i]) + np.abs(stu_c - stu_f.y[..., i])) / scale))
+        fine_sep = float(np.nanmax(np.abs(stu_f.y[..., i] - ref_f.y[..., i]) / scale))
+    c.confirmed = bool(np.isfinite(fine_sep) and fine_sep > 1.0 and np.isfinite(estimate)
+                       and estimate < 0.1 * separation)
+    c.evidence = (f"{'confirmed' if c.confirmed else 'not confirmed'}: at t = {c.separation_time:.3g} ({c.component}) "
+                  f"the motions are {separation:.3g} comparison tolerances apart (rtol {acc.compare_rtol:g}, atol "
+                  f"{acc.compare_atol:g}); the integration's error estimate there (the runs at rtol {acc.rtol:g} and "
+                  f"{fine.rtol:g}, reference and yours) is {estimate:.2g} of them; at integration rtol {fine.rtol:g} the "
+                  f"motions are {fine_sep:.3g} apart there ({c.method or 'DOP853'}, window [0, {window:.3g}])")

@@ -1,0 +1,128 @@
+"""Trajectories with a role (issue 34, items 1 and 5): the states the true motion visits are sampled
+too, with the sampled states' tolerance, and decide an answer that agrees only inside the sampling box;
+a rejection by the trajectory comparison carries its evidence and is confirmed at a finer tolerance,
+or flagged for review."""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import lagrade
+from lagrade.checkers import dynamics
+from lagrade.compare import trajectory as tr
+from lagrade.compare.trajectory import ACCURACY, Comparison, compare_runs, confirm_refutation
+from lagrade.result import PartResult
+
+REFERENCE = Path(__file__).resolve().parents[1] / "reference_solutions" / "12.14" / "answer.py"
+
+#: 12.14's exact equations with the first row's force times 1 + exp(8*(theta1'^2 + theta2'^2) - 40):
+#: below 4e-11 of it where velocities are sampled (|q'| <= 1), large at the speeds the motion reaches
+BEYOND_THE_BOX = (
+    'eom_exact = ["(m1 + m2)*l1*theta1_dd + m2*l2*(theta2_dd*cos(theta1 - theta2) + theta2_d^2*sin(theta1 - theta2))'
+    ' == -(m1 + m2)*g*sin(theta1) + g*exp(8*theta1_d^2 + 8*theta2_d^2 - 40)", '
+    '"l2*theta2_dd + l1*(theta1_dd*cos(theta1 - theta2) - theta1_d^2*sin(theta1 - theta2)) == -g*sin(theta2)"]\n')
+
+
+def _part(result, name: str = "eom_exact") -> PartResult:
+    return next(p for p in result.parts if p.part == name)
+
+
+@pytest.fixture
+def beyond_the_box(tmp_path) -> Path:
+    path = tmp_path / "answer.toml"
+    path.write_text(BEYOND_THE_BOX)
+    return path
+
+
+@pytest.mark.parametrize("accuracy", ["default", "strict"])
+def test_an_answer_wrong_only_beyond_the_box_is_rejected_along_the_motion(beyond_the_box, accuracy):
+    part = _part(lagrade.check("12.14", beyond_the_box, accuracy=accuracy))
+    assert part.verdict != "correct" and part.method == "numeric", part.feedback
+    assert dynamics.ALONG_MOTION.replace("the true motion", "it") in part.feedback
+    assert part.certified is True, part.review   # certified at the exact motion state, like a box sample
+
+
+def test_the_box_samples_alone_accept_it(beyond_the_box, monkeypatch):
+    """What main did: without the states along the motion the answer is accepted (its trajectories
+    agree within the comparison tolerance), so the new evidence is what decides it."""
+    monkeypatch.setattr(dynamics, "_along_motion", lambda *a, **k: None)
+    part = _part(lagrade.check("12.14", beyond_the_box, accuracy="default"))
+    assert part.verdict == "correct", part.feedback
+
+
+@pytest.mark.parametrize("accuracy", ["fast", "default", "strict"])
+def test_the_right_answers_still_pass_at_the_states_along_the_motion(accuracy):
+    result = lagrade.check("12.14", REFERENCE, accuracy=accuracy)
+    assert result.full_marks and _part(result).verdict == "correct", str(result)
+
+
+def _perturbed_g(tmp_path: Path) -> Path:
+    src = "from sympy import Rational\n" + REFERENCE.read_text()
+    src = src.replace("-(m1 + m2) * g * sin(th1)),", "-(m1 + m2) * (1 + Rational(1, 10**6))*g * sin(th1)),")
+    src = src.replace("-g * sin(th2)),", "-(1 + Rational(1, 10**6))*g * sin(th2)),")
+    path = tmp_path / "answer.py"
+    path.write_text(src)
+    return path
+
+
+def test_a_trajectory_refutation_carries_its_evidence_for_the_instructor(tmp_path, monkeypatch):
+    # states at 1e-3 let the 1e-6 error through: only the trajectory comparison can refute it
+    monkeypatch.setitem(tr.ACCURACY, "default-loose",
+                        dataclasses.replace(ACCURACY["default"], name="default-loose", sample_rtol=1e-3))
+    result = lagrade.check("12.14", _perturbed_g(tmp_path), accuracy="default-loose")
+    part = _part(result)
+    assert part.verdict == "incorrect" and part.method == "trajectory", part.feedback
+    assert part.confirmed is True and part.review is None
+    ev = part.trajectory_evidence
+    assert ev.startswith("confirmed") and "comparison tolerances apart" in ev and "error estimate" in ev
+    assert ev not in part.feedback and "tolerances apart" not in part.feedback   # never the student's words
+    dumped = result.model_dump_json()
+    assert '"confirmed":true' in dumped and "comparison tolerances apart" in dumped   # `--json`: the instructor's
+
+
+def test_the_student_view_hides_the_trajectory_evidence():
+    from lagrade.server import rules
+
+    src = Path(rules.__file__).read_text()
+    assert '"trajectory_evidence": None' in src   # blanked in the view of anyone who is not an instructor
+
+
+def _pendulum(t, y):
+    return np.array([y[1], -9.8 * np.sin(y[0])])
+
+
+def test_a_refutation_the_finer_tolerance_does_not_confirm_is_review():
+    """Integration error dressed up as a separation: the same rates on both sides, the student's run
+    displaced by more than the comparison tolerance. The finer re-integration finds no separation, so
+    the rejection is unconfirmed and goes to review."""
+    acc = ACCURACY["default"]
+    y0 = np.array([[1.0, 0.5], [0.0, 0.2]])
+    comp = compare_runs(_pendulum, _pendulum, y0, ["theta", "theta'"], 2.0, acc, chaos=False)
+    assert comp.agree
+    i = comp.reference_t.size // 2
+    fake = Comparison(False, 2.0, float(comp.reference_t[i]), "theta", 5.0, method="DOP853", rtol=acc.rtol,
+                      window=2.0, decisive=True, reference_t=comp.reference_t, reference_y=comp.reference_y,
+                      reference_stop=comp.reference_stop, student_y=comp.reference_y * (1 + 5 * acc.compare_rtol))
+    confirm_refutation(fake, _pendulum, _pendulum, y0, acc)
+    assert fake.confirmed is False and fake.evidence.startswith("not confirmed")
+    fake.confirm = lambda: None
+    res = dynamics._with_trajectory_evidence(PartResult(part="eom", verdict="incorrect", score=0, max_score=1,
+                                                        method="trajectory"), fake)
+    assert res.confirmed is False and "did not confirm" in res.review
+
+
+def test_a_real_separation_is_confirmed():
+    acc = ACCURACY["default"]
+    y0 = np.array([[1.0, 0.5], [0.0, 0.2]])
+
+    def off(t, y):
+        return np.array([y[1], -9.8 * (1 + 1e-5) * np.sin(y[0])])
+
+    comp = compare_runs(off, _pendulum, y0, ["theta", "theta'"], 2.0, acc, chaos=False)
+    assert comp.decisive
+    confirm_refutation(comp, off, _pendulum, y0, acc)
+    assert comp.confirmed is True, comp.evidence
