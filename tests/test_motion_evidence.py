@@ -126,3 +126,20 @@ def test_a_real_separation_is_confirmed():
     assert comp.decisive
     confirm_refutation(comp, off, _pendulum, y0, acc)
     assert comp.confirmed is True, comp.evidence
+
+
+@pytest.mark.slow
+def test_the_evidence_benchmark_names_the_deciding_evidence():
+    """benchmarks/evidence.py (the table of docs/numerics.md) on 12.14: the beyond-the-box
+    answer is decided along the motion under default, the others by the sampled states."""
+    import importlib.util
+
+    path = Path(__file__).resolve().parents[1] / "benchmarks" / "evidence.py"
+    spec = importlib.util.spec_from_file_location("evidence_bench", path)
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    out = {(pid, part, cls, acc): ev for pid, part, cls, acc, ev in bench.scan(["12.14"])}
+    assert out[("12.14", "eom_exact", "beyond the box", "default")] == "states along the motion"
+    assert out[("12.14", "eom_exact", "gross error", "fast")] == "sampled states"
+    assert "| beyond the box | default | 1 | 0 | 1 |" in bench.markdown(list(
+        (p, n, c, a, e) for (p, n, c, a), e in out.items()))

@@ -83,6 +83,11 @@ def _answer_kind(path: Path, config) -> str | None:
     return kind if _problem_dirs_for(config, path.parent.name, path) is not None else None
 
 
+def pytest_addoption(parser):  # noqa: D103
+    parser.addoption("--lagrade-accuracy", default="default", choices=("fast", "default", "strict"),
+                     help="grade the golden answers under this accuracy preset (honest answers pass under each)")
+
+
 def pytest_collect_file(file_path: Path, parent):  # noqa: D103
     if _is_problem_file(file_path):
         return ProblemFile.from_parent(parent, path=file_path)
@@ -156,7 +161,7 @@ class AnswerItem(pytest.Item):
             problem = load_problem(self.problem_id, _problem_dirs_for(self.config, self.problem_id, self.path) or ())
         except SpecError as exc:
             raise GradingFailure(str(exc)) from None
-        result = check(problem, self.path)
+        result = check(problem, self.path, accuracy=self.config.getoption("--lagrade-accuracy", "default"))
         full, verdicts = self.expectation()
         complaints = []
         if full and not result.full_marks:

@@ -2,8 +2,9 @@
 
 Each collects three kinds of evidence: evaluation at random states (refutes almost every wrong
 answer in microseconds), a time-bounded symbolic proof, and trajectories integrated from the same
-initial states. A correct answer is accepted on agreement at every random state even when the
-symbolic proof gives up; a wrong one is refuted by the states and explained by the trajectories.
+initial states, whose visited states are evaluated too (the sampling box does not reach where every
+motion goes). A correct answer is accepted on agreement at every such state even when the symbolic
+proof gives up; a wrong one is refuted by the states and explained by the trajectories.
 """
 
 from __future__ import annotations
@@ -240,11 +241,12 @@ def _confirm(ctx: Context, prove: Callable[[], bool | None], trajectory: Callabl
 
 
 def _decide(ctx: Context, part: Part, proof: bool | None, traj: Comparison | None, note: str = "") -> PartResult:
-    """Agreement at every sampled state (within the preset's ``sample_rtol``) already holds when this
-    is called, for an answer the acceptance rule (`admit`) lets sampling decide: exact simple numbers,
-    no switch. A proof settles it; otherwise the trajectories do: motions that separate beyond the
-    preset's tolerance refute the answer (an error below ``sample_rtol`` at every state that grows along
-    the motion), and evidence that could not decide is flagged for an instructor's review."""
+    """Agreement at every sampled state and at the states the reference motions visit (within the
+    preset's ``sample_rtol``) already holds when this is called, for an answer the acceptance rule
+    (`admit`) lets sampling decide: exact simple numbers, no switch. A proof settles it; otherwise the
+    trajectories do: motions that separate beyond the preset's tolerance refute the answer (an error
+    below ``sample_rtol`` at every state that grows along the motion), with the refutation's evidence
+    and its confirmation at a finer tolerance; evidence that could not decide is flagged for review."""
     extra = f" {note}" if note else ""
     if proof:
         admit.proved()

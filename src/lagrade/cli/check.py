@@ -19,7 +19,10 @@ from lagrade.cli.common import fail, leave, problems_option
 @click.argument("answer", type=click.Path(path_type=Path))
 @click.option("--json", "as_json", is_flag=True, help="Print exactly one JSON object.")
 @click.option("--accuracy", type=click.Choice(["fast", "default", "strict"]), default="default",
-              show_default=True, help="Tolerances of the sampled states (sample_rtol) and of the trajectory comparison.")
+              show_default=True, help="sample_rtol (1e-7/1e-8/1e-10), which decides every dynamics part at the sampled states and the "
+                   "states the true motion visits; the integration's tolerance and the number of motions "
+                   "(which states are visited); and the trajectory comparison's tolerance, which only "
+                   "explains a rejection or, rarely, refutes (docs/numerics.md, section 5).")
 @click.option("--part", "only", multiple=True, help="Grade only these parts.")
 @click.option("--hints", is_flag=True, help="More specific feedback: which term is missing or extra.")
 @click.option("--credit", "credit_file", type=click.Path(exists=True, path_type=Path),

@@ -67,9 +67,22 @@ def rejected(pid: str, name: str, rows, single: bool, param, eps: float, accurac
     _write(path, name, scaled, single)
     result = lagrade.check(pid, path, accuracy=accuracy)
     part = next(p for p in result.parts if p.part == name)
-    LAST["evidence"] = ("the numbers rule" if "cannot be accepted" in part.feedback
-                        else "trajectories" if part.method == "trajectory" else "sampled states")
+    LAST["evidence"] = evidence(part)
     return part.verdict != "correct"
+
+
+#: the words of a rejection at the states the motion visits (`lagrade.checkers.dynamics.ALONG_MOTION`)
+MOTION_WORDS = "beyond the range states are sampled from"
+
+
+def evidence(part) -> str:
+    """Which evidence decided a part's rejection, from the verdict's method and words."""
+    if part.verdict == "correct":
+        return "not rejected"
+    return ("the numbers rule" if "cannot be accepted" in part.feedback
+            else "trajectories" if part.method == "trajectory"
+            else "states along the motion" if MOTION_WORDS in part.feedback
+            else "sampled states")
 
 
 def smallest_rejected(*args) -> float | None:
