@@ -46,6 +46,19 @@ def test_an_answer_wrong_only_beyond_the_box_is_rejected_along_the_motion(beyond
     assert part.certified is True, part.review   # certified at the exact motion state, like a box sample
 
 
+def test_a_lagrangian_wrong_only_beyond_the_box_is_rejected_along_the_motion(tmp_path):
+    """L plus a velocity term below 1e-13 of it in the box: its Lagrange equations are compared at the
+    states the motion visits (main rejected it only by the trajectory comparison, uncertified)."""
+    path = tmp_path / "answer.toml"
+    path.write_text('L = "(m1 + m2)*l1^2*theta1_d^2/2 + m2*l2^2*theta2_d^2/2 + m2*l1*l2*theta1_d*theta2_d*'
+                    'cos(theta1 - theta2) + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2) + '
+                    'g*l1*m1*exp(8*theta1_d^2 + 8*theta2_d^2 - 40)"\n')
+    part = _part(lagrade.check("12.14", path, accuracy="default"), "L")
+    assert part.verdict == "incorrect" and part.method == "numeric", part.feedback
+    assert "the Lagrange equations your L gives" in part.feedback and dynamics.ALONG_MOTION in part.feedback
+    assert part.certified is True, part.review
+
+
 def test_the_box_samples_alone_accept_it(beyond_the_box, monkeypatch):
     """What main did: without the states along the motion the answer is accepted (its trajectories
     agree within the comparison tolerance), so the new evidence is what decides it."""
