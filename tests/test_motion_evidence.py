@@ -98,10 +98,24 @@ def test_a_trajectory_refutation_carries_its_evidence_for_the_instructor(tmp_pat
 
 
 def test_the_student_view_hides_the_trajectory_evidence():
+    """The server's view of an attempt: the instructor reads the trajectory evidence, a student never
+    (the separation and the time it happens say how far off the answer is)."""
+    from types import SimpleNamespace
+
+    from lagrade.bulk.assignment import Rules
     from lagrade.server import rules
 
-    src = Path(rules.__file__).read_text()
-    assert '"trajectory_evidence": None' in src   # blanked in the view of anyone who is not an instructor
+    evidence = {"t": 1.25, "separation": 40.0, "error_estimate": 0.01, "finer_separation": 39.0}
+    part = {"part": "eom", "verdict": "incorrect", "score": 0.0, "feedback": "wrong", "trajectory_evidence": evidence}
+    server = SimpleNamespace(assignment=SimpleNamespace(rules=Rules()), problems={},
+                             db=SimpleNamespace(count=lambda *a: 1))
+    att = SimpleNamespace(id=7, student="s", problem="12.14", created_at="2026-01-01T00:00:00+00:00", graded=True,
+                          result={"score": 0.0, "parts": [part]})
+    teacher = rules.view(server, att, SimpleNamespace(instructor=True))
+    student = rules.view(server, att, SimpleNamespace(instructor=False))
+    assert teacher["parts"][0]["trajectory_evidence"] == evidence
+    assert student["parts"][0]["trajectory_evidence"] is None
+    assert "40" not in str(student["parts"][0])
 
 
 def _pendulum(t, y):
