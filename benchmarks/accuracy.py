@@ -22,6 +22,7 @@ from lagrade.compare.trajectory import ACCURACY, estimate_stiffness, integrate
 from lagrade.library import load_problem
 from lagrade.reference import Mechanics
 from lagrade.research import workprecision as wp
+from lagrade.scene_model import scene_model
 
 
 def methods_at_default(md: bool = False):
@@ -38,7 +39,7 @@ def methods_at_default(md: bool = False):
 
 
 def stiffness_sweep(md: bool = False):
-    """The grader's own rates and integrator (`integrate` on `Mechanics.lagrange_rates`), per method."""
+    """The grader's own rates and integrator (`integrate` on `scene_model(mech).compiled_rates`), per method."""
     problem = load_problem("12.7")
     mech = Mechanics(problem, problem.systems[0])
     K = 4
@@ -48,7 +49,7 @@ def stiffness_sweep(md: bool = False):
         P = np.array([np.ones(K), np.full(K, km), np.ones(K), np.full(K, 9.8)])
         y0 = np.array([1.0 + 9.8 / km + rng.uniform(-1e-3, 1e-3, K), rng.uniform(-1, 1, K),
                        rng.uniform(-0.05, 0.05, K), rng.uniform(-1, 1, K)])
-        rates = mech.lagrange_rates(P)
+        rates = scene_model(mech).compiled_rates(P)
         st = estimate_stiffness(rates, y0, 2.0, ACCURACY["default"])
         cells = []
         for method in ("DOP853", "LSODA", "Radau", "auto"):

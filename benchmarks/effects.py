@@ -1,6 +1,7 @@
 """What simulating only a scene's declared effects saves, on the grading path: per scene, the median time
-of the dynamics part's trajectory check (`compare_runs` as the checker calls it) with the declared
-machinery and with all machinery compiled in, side by side in one run.
+of the dynamics part's trajectory check (`compare_runs` as the checker calls it) with the model built
+from the declared effects and with the same builder's all-machinery model, on the same path, side by
+side in one run (the repeats alternated).
 
     python benchmarks/effects.py [IDS...]
 
@@ -14,11 +15,12 @@ import sys
 
 from lagrade.research.effectsbench import COULOMB, compare_scene, format_rows
 
+REPEAT = 9
 IDS = ("12.43", "12.14", "12.7", "12.16", "12.22", "12.34", "12.35", "12.4", "12.23", "12.49", COULOMB)
 
 if __name__ == "__main__":
     ids = sys.argv[1:] or IDS
-    rows = [compare_scene(pid, repeat=5) for pid in ids]
+    rows = [compare_scene(pid, repeat=REPEAT) for pid in ids]
     print(format_rows(rows))
     total_d = sum(r.ms_declared for r in rows)
     total_a = sum(r.ms_all for r in rows)

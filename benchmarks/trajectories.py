@@ -6,7 +6,7 @@ downward vertical; parameters m1, m2, l1, l2, g; horizon 2 s). Every figure is t
 to the ratio. Three comparisons:
 
 1. **Cost per trajectory** (target: batched >= 5x cheaper). lagrade's ``integrate`` on the grader's
-   own reference rates (``mech.lagrange_rates``): its batched DOP853, K trajectories stepped together,
+   own reference rates (``scene_model(mech).compiled_rates``): its batched DOP853, K trajectories stepped together,
    each with its own step size and error control, each stage one call of the compiled rates
    (machine code through symengine's LLVM ``Lambdify``, ``lagrade.numeric``; numpy code otherwise),
    against the plain way: lambdify the closed-form accelerations once and call
@@ -59,6 +59,7 @@ from lagrade.grade import references
 from lagrade.library import load_problem
 from lagrade.numeric import backend
 from lagrade.sampling import rng_for, sample_points, state_arrays
+from lagrade.scene_model import scene_model
 
 PROBLEM = "12.14"
 SAMPLES = 201
@@ -98,7 +99,7 @@ def states(mech, K: int, seed: str = "bench"):
 def lagrade_run(mech, q, qd, params, tol: float):
     """lagrade's ``integrate`` on the K states at once, rtol = atol = tol, 201 output times."""
     acc = replace(ACCURACY["default"], rtol=tol, atol=tol, max_rhs_evals=10**7)
-    run = integrate(mech.lagrange_rates(params), np.concatenate([q, qd]), mech.system.horizon, acc,
+    run = integrate(scene_model(mech).compiled_rates(params), np.concatenate([q, qd]), mech.system.horizon, acc,
                     samples=SAMPLES, method="DOP853")
     if not run.ok:
         raise RuntimeError(f"lagrade integrate failed at tol {tol:g}: {run.message}")
@@ -285,7 +286,7 @@ def pydy_runs(system, consts, mech, q, qd, params, tol: float, count: bool = Fal
 def check_pydy_rhs(system, consts, mech) -> float:
     """max over random states and parameters of |PyDy rhs - lagrade rates| / max |lagrade rates|."""
     q, qd, params = states(mech, 8, seed="pydy-check")
-    mine = mech.lagrange_rates(params)(0.3, np.concatenate([q, qd]))
+    mine = scene_model(mech).compiled_rates(params)(0.3, np.concatenate([q, qd]))
     worst = 0.0
     for k in range(q.shape[1]):
         pydy_set(system, consts, mech, np.concatenate([q[:, k], qd[:, k]]), params[:, k])

@@ -25,6 +25,7 @@ from lagrade.numeric import (
     solve_batch,
 )
 from lagrade.sampling import rng_for, sample_points, state_arrays
+from lagrade.scene_model import scene_model
 
 pytestmark = pytest.mark.skipif(not numeric.machine_code(), reason="symengine is not installed")
 
@@ -193,7 +194,7 @@ def test_every_reference_right_hand_side_is_machine_code_and_agrees_with_numpy(p
         got, want = made(*args), compile_numpy(exprs, mech.args)(*args)
         assert got.shape == want.shape == (n, q.shape[1])
         assert np.allclose(got, want, rtol=1e-10, atol=1e-12, equal_nan=True), pid
-        rates = mech.lagrange_rates(params)
+        rates = scene_model(mech).compiled_rates(params)
         assert is_machine_code(rates.f), f"{pid} {system.key}: the rates are not machine code"
         y0 = np.concatenate([q, qd])
         assert np.allclose(rates(t, y0)[n:], want, rtol=1e-8, atol=1e-10, equal_nan=True), pid

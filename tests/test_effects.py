@@ -191,3 +191,69 @@ def test_check_names_the_problem_file_and_line_of_an_undeclared_effect(tmp_path)
     assert len(lines) == 1 and "Traceback" not in r.stderr
     assert lines[0].startswith(f"lagrade: {tmp_path / '12.35.toml'}:{line}: ")
     assert lines[0].endswith("declare dissipation_friction")
+
+
+# ------------------------------------------------------------------ the one model grading compiles
+
+@pytest.mark.parametrize("pid", problem_ids())
+def test_the_compiled_model_has_exactly_the_declared_machinery(pid):
+    """Every scene's model (`scene_model`, what grading integrates) is compiled with t only when a
+    declared effect makes the scene time-dependent, velocity forces kept apart only for declared
+    dissipation, multipliers only for constraint forces or contact, contact events only for
+    unilateral contact."""
+    import numpy as np
+
+    from lagrade.effects import machinery
+    from lagrade.grade import references
+    from lagrade.library import load_problem
+    from lagrade.numeric import Compiled
+    from lagrade.sampling import rng_for, sample_points, state_arrays
+    from lagrade.scene_model import scene_model
+    from lagrade.symbols import T
+
+    problem = load_problem(pid)
+    refs = references(problem)
+    for system in problem.systems:
+        mech = refs[system.key]
+        if not mech.s.q:
+            continue
+        declared = machinery(mech)
+        model = scene_model(mech)
+        assert model.machinery == declared
+        assert (T in model.args) == declared.explicit_time, f"{pid}{system.key}"
+        if not declared.explicit_time:   # sound only because nothing depends on t
+            assert not any(e.has(T) for e in [*mech.mass, *mech.force]), f"{pid}{system.key}"
+        assert (model._Q is not None) == declared.velocity_forces
+        assert (model._mult is not None) == bool(declared.multipliers or declared.contact_events)
+        q, qd, _, params = state_arrays(mech, sample_points(mech, 4, rng_for(pid, system.key, "machinery")))
+        rates = model.compiled_rates(params)
+        assert rates.timed == declared.explicit_time
+        if isinstance(rates.f, Compiled):
+            assert rates.f.nargs == len(model.args) == 2 * len(mech.s.q) + declared.explicit_time + len(mech.params)
+        y0 = np.concatenate([q, qd])
+        assert len(model.contact_events(y0, params)) == len(declared.contact_events)
+
+
+def test_grading_integrates_an_autonomous_scene_without_t_or_events():
+    """12.14 (a double pendulum: no time dependence, no force, no contact): the reference grading
+    integrates takes no t argument and watches no event. On main it was `Mechanics.lagrange_rates`,
+    compiled with [q, q', t, params] whatever the scene declared."""
+    from lagrade.checkers.base import Context
+    from lagrade.checkers.dynamics import _lagrange_solver, lagrange_inputs
+    from lagrade.grade import references
+    from lagrade.library import load_problem
+    from lagrade.research.effectsbench import _dynamics_part
+
+    problem = load_problem("12.14")
+    system = problem.systems[0]
+    part = _dynamics_part(problem, system)
+    ctx = Context(problem, references(problem))
+    mech = ctx.mech(part)
+    run = lagrange_inputs(ctx, mech, part, lambda: _lagrange_solver(mech.L, mech, part),
+                          lambda: mech.lagrange_rows(mech.L))
+    assert not run.switching and run.events == []
+    assert run.reference.timed is False
+    assert run.reference.f.nargs == 2 * len(mech.s.q) + len(mech.params)
+    generic = lagrange_inputs(ctx, mech, part, lambda: _lagrange_solver(mech.L, mech, part),
+                              lambda: mech.lagrange_rows(mech.L), everything=True)
+    assert generic.reference.timed is True and not generic.switching

@@ -10,6 +10,7 @@ from markdown_it import MarkdownIt
 from lagrade.compare.trajectory import ACCURACY, compare_runs
 from lagrade.numeric import CompiledRates, is_machine_code
 from lagrade.research import workprecision as wp
+from lagrade.scene_model import scene_model
 
 TOLS = (1e-4, 1e-10)
 K = 2
@@ -66,7 +67,7 @@ def test_grading_path_costs_what_compare_runs_costs(spied):
     sw, _ = spied
     sc = sw.scene
     row = next(r for r in sw.rows if r.preset == "default")
-    rates = sc.mech.lagrange_rates(sc.params)
+    rates = scene_model(sc.mech).compiled_rates(sc.params)
     cmp = compare_runs(rates, rates, sc.y0, ["theta", "theta'"], sc.horizon, ACCURACY["default"], chaos=False)
     assert cmp.agree
     dim = sc.y0.shape[0]

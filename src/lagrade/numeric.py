@@ -541,20 +541,22 @@ class CompiledRates:
     ``copied .. 2 copied - 1`` as they are (q' = q-dot of a second-order system, whose ``f`` gives
     the accelerations only); ``f`` writes the other ``dim - copied``. ``constants``: (C, K) per
     trajectory, or (C, 1) shared; they are the parameters (and a part's extra symbols) of each
-    sampled state.
+    sampled state. ``timed=False``: ``f`` has no t row (an autonomous scene's model compiles none,
+    `lagrade.scene_model.SceneModel.compiled_rates`), so the rows are [Y, constants].
     """
 
-    __slots__ = ("_kept", "constants", "copied", "dim", "f")
+    __slots__ = ("_kept", "constants", "copied", "dim", "f", "timed")
 
-    def __init__(self, f: Vectorized, dim: int, constants: np.ndarray, copied: int = 0):
-        self.f, self.dim, self.copied = f, dim, copied
+    def __init__(self, f: Vectorized, dim: int, constants: np.ndarray, copied: int = 0, timed: bool = True):
+        self.f, self.dim, self.copied, self.timed = f, dim, copied, timed
         values = np.asarray(constants, dtype=float)
         self.constants = np.ascontiguousarray(values[:, None] if values.ndim == 1 else values)
         self._kept = threading.local()
 
     def __call__(self, t: float | np.ndarray, Y: np.ndarray) -> np.ndarray:
         if not isinstance(self.f, Compiled):
-            body = call_blocks(self.f, Y, as_row(t), self.constants)
+            body = call_blocks(self.f, Y, as_row(t), self.constants) if self.timed \
+                else call_blocks(self.f, Y, self.constants)
             c = self.copied
             return np.concatenate([Y[c:2 * c], body]) if c else body
         # Machine code: the points' rows are written into a buffer that already holds the constants
@@ -564,11 +566,13 @@ class CompiledRates:
         kept = getattr(self._kept, "buffers", None)
         if kept is None or kept[0] != K:
             src, out = np.empty((K, self.f.nargs)), np.empty((K, self.f.count))
-            src[:, dim + 1:] = self.constants.T
-            kept = self._kept.buffers = (K, src.reshape(-1), out.reshape(-1), src[:, :dim], src[:, dim], out.T)
+            src[:, dim + self.timed:] = self.constants.T
+            time_col = src[:, dim] if self.timed else None
+            kept = self._kept.buffers = (K, src.reshape(-1), out.reshape(-1), src[:, :dim], time_col, out.T)
         _, src, out, state, time, body = kept
         state[...] = Y.T
-        time[...] = t
+        if time is not None:
+            time[...] = t
         self.f.f.unsafe_eval(src, out, K)
         result = np.empty((dim, K))
         result[:c] = Y[c:2 * c]
@@ -578,4 +582,4 @@ class CompiledRates:
     def pair(self) -> CompiledRates:
         """The same rates for a batch of twice the columns: each state and a displaced copy of it."""
         return CompiledRates(self.f, self.dim, np.concatenate([self.constants, self.constants], axis=1)
-                             if self.constants.shape[1] > 1 else self.constants, self.copied)
+                             if self.constants.shape[1] > 1 else self.constants, self.copied, self.timed)

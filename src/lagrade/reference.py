@@ -17,7 +17,6 @@ import sympy as sp
 from lagrade.general_functions import arities, random_function, substitute
 from lagrade.notation import parse_math
 from lagrade.numeric import (
-    CompiledRates,
     Vectorized,
     as_row,
     call_blocks,
@@ -127,7 +126,7 @@ class Mechanics:
         validate_effects(self)
 
     def __getstate__(self) -> dict:
-        return {**self.__dict__, "problem": None, "_rows_of": {}}  # see ReferenceCache
+        return {**self.__dict__, "problem": None, "_rows_of": {}, "_scene_models": {}}  # see ReferenceCache
 
     def lagrange_rows(self, L: sp.Expr) -> list[sp.Expr]:
         """``d/dt dL/dq' - dL/dq - Q`` of any Lagrangian on this system's coordinates, with the scene's
@@ -187,12 +186,6 @@ class Mechanics:
         params = np.asarray(params, dtype=float)
         return call_blocks(self._accelerations_f, q, qd, as_row(t),
                            params if params.ndim == 2 else params.reshape(-1, 1))
-
-    def lagrange_rates(self, params: np.ndarray) -> CompiledRates:
-        """(q', q'') of the states (q, q') of a batch whose parameters are ``params`` (P, K): the right-hand
-        side of the reference motion, one compiled call (machine code where symengine compiles it)."""
-        n = len(self.s.q)
-        return CompiledRates(self._accelerations_f, 2 * n, params, copied=n)
 
     @cached_property
     def _momentum_f(self) -> Vectorized:

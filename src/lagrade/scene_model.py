@@ -36,7 +36,15 @@ import sympy as sp
 
 from lagrade.compare.trajectory import BatchedEvent
 from lagrade.effects import Machinery, _velocity_switches, dry_friction_form, machinery, switch_groups
-from lagrade.numeric import Vectorized, as_row, call_blocks, compile_exprs, solve_batch
+from lagrade.numeric import (
+    CompiledRates,
+    Vectorized,
+    as_row,
+    call_blocks,
+    compile_exprs,
+    compile_linear_solve,
+    solve_batch,
+)
 from lagrade.reference import Mechanics, split_energy
 from lagrade.symbols import T
 
@@ -269,6 +277,7 @@ class SceneModel(Switching):
         self._mass = compile_exprs(list(mech.mass), base)
         self._force = compile_exprs(conservative, base)
         self.branches: Branches | None = None
+        self._solve: Vectorized | None = None
         self._Q = None
         self._switch = None
         if declared.velocity_forces:
@@ -334,6 +343,26 @@ class SceneModel(Switching):
 
         return f
 
+    @property
+    def args(self) -> list[sp.Symbol]:
+        """The arguments every function of this model is compiled with: q, q', t only when the declared
+        effects make the scene time-dependent, the parameters."""
+        s = self.mech.s
+        return [*s.q, *s.qd] + ([T] if self.time_arg else []) + list(self.mech.params)
+
+    def compiled_rates(self, params: np.ndarray) -> CompiledRates:
+        """The rates of a scene without switching as one compiled call (machine code where symengine
+        compiles it), from the same declared machinery: no t argument for an autonomous scene, the
+        applied forces part of the force vector. This is what grading integrates for every scene that
+        declares no switching. A switching scene's compiled rates are its exact non-smooth law (sign(h)
+        evaluated, no branches, no sticking): what a study of the integrator runs; grading integrates
+        `rates` there (Filippov's rule needs branches)."""
+        if self._solve is None:
+            n = self.n
+            force = list(self.mech.force)   # = conservative + Q: no branch to keep apart
+            self._solve = compile_linear_solve([list(self.mech.mass.row(i)) for i in range(n)], force, self.args)
+        return CompiledRates(self._solve, self.dim, params, copied=self.n, timed=self.time_arg)
+
     def multipliers(self, Y: np.ndarray, t, params: np.ndarray) -> np.ndarray:
         """Constraint forces along the motion, (len(multiplier_names), K)."""
         if self._mult is None:
@@ -376,6 +405,16 @@ class SceneModel(Switching):
         n = self.n
         K = Y.shape[1]
         return self._E(*Y[:n], *Y[n:], np.full(K, t) if np.ndim(t) == 0 else t, *params)[0]
+
+
+def scene_model(mech: Mechanics, *, everything: bool = False) -> SceneModel:
+    """The one model of ``mech`` grading integrates when the scene declares no switching (kept on the
+    Mechanics: it holds no per-run state there, and compiling it is the slow part). A switching
+    scene's model keeps its branches per run: build a `SceneModel` for each run instead."""
+    kept = mech.__dict__.setdefault("_scene_models", {})
+    if everything not in kept:
+        kept[everything] = SceneModel(mech, everything=everything)
+    return kept[everything]
 
 
 class EquationsModel(Switching):

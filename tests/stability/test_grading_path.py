@@ -1,7 +1,7 @@
 """The integrator as grading runs it, checked against closed forms over long runs (issue 23, §4).
 
 Every run here goes through the objects a check uses: the scene's compiled rates
-(`Mechanics.lagrange_rates`, a `CompiledRates` of the compiled accelerations), the grading presets,
+(`scene_model(mech).compiled_rates`, a `CompiledRates` of the compiled accelerations), the grading presets,
 lagrade's one integrator (`lagrade.compare.dop853.DOP853`), and for contact the model's stop events
 located on the dense output. A spy asserts that the integrator's steps really ran on the compiled
 rates, so a broken step control, dense output or event locator fails here.
@@ -30,7 +30,7 @@ from scipy.special import ellipj, ellipk
 
 from lagrade.compare import dop853
 from lagrade.compare.trajectory import ACCURACY, integrate
-from lagrade.scene_model import SceneModel
+from lagrade.scene_model import SceneModel, scene_model
 
 from .helpers import custom, mechanics, params
 
@@ -69,7 +69,7 @@ def test_pendulum_over_a_thousand_periods_matches_the_elliptic_solution(preset, 
     quarter = ellipk(k ** 2)
     w0 = np.sqrt(g / length)
     horizon = 1000 * (4 * quarter / w0).max()
-    run = integrate(mech.lagrange_rates(P), np.array([A, np.zeros(len(A))]), horizon, _acc(preset),
+    run = integrate(scene_model(mech).compiled_rates(P), np.array([A, np.zeros(len(A))]), horizon, _acc(preset),
                     t_eval=np.linspace(0.0, horizon, 20001))
     assert run.ok, run.message
     assert len(steps) > 1000, "the grading path's integrator did not step"
@@ -98,7 +98,7 @@ def test_dense_output_between_steps_matches_the_oscillator(preset, steps):
     x0, v0 = np.array([1.0, -0.5, 0.2]), np.array([0.0, 1.0, -2.0])
     horizon = 1000 * 2 * np.pi / w.min()
     t_eval = np.linspace(0.0, horizon, 7 * 1000 + 1)   # off the steps' ends: the dense output gives them
-    run = integrate(mech.lagrange_rates(P), np.array([x0, v0]), horizon, _acc(preset), t_eval=t_eval)
+    run = integrate(scene_model(mech).compiled_rates(P), np.array([x0, v0]), horizon, _acc(preset), t_eval=t_eval)
     assert run.ok, run.message
     assert len(steps) > 1000
     exact = x0[:, None] * np.cos(w[:, None] * run.t) + (v0 / w)[:, None] * np.sin(w[:, None] * run.t)
@@ -119,12 +119,12 @@ def test_a_batch_costs_what_scipys_dop853_costs_its_hardest_trajectory(preset, s
     horizon = 20 * 4 * ellipk(np.sin(A.max() / 2) ** 2) / np.sqrt(9.8)
     acc = _acc(preset)
     y0 = np.array([A, np.zeros(len(A))])
-    run = integrate(mech.lagrange_rates(P), y0, horizon, acc, t_eval=np.array([0.0, horizon]))
+    run = integrate(scene_model(mech).compiled_rates(P), y0, horizon, acc, t_eval=np.array([0.0, horizon]))
     assert run.ok, run.message
     assert steps, "the grading path's integrator did not step"
     alone = []
     for k in range(len(A)):
-        rates_k = mech.lagrange_rates(P[:, k:k + 1])
+        rates_k = scene_model(mech).compiled_rates(P[:, k:k + 1])
         solver = ScipyDOP853(lambda t, y, r=rates_k: r(t, y[:, None])[:, 0], 0.0, y0[:, k], horizon,
                              rtol=acc.rtol, atol=acc.atol)
         while solver.status == "running":
@@ -145,7 +145,7 @@ def test_contact_loss_is_located_where_the_closed_form_says(preset):
     theta0 = np.array([0.05, 0.2, 0.6])
     y0 = np.array([theta0, np.zeros(3)])                     # released from rest
     model = SceneModel(mech)
-    run = integrate(mech.lagrange_rates(P), y0, 20.0, _acc(preset), events=model.events(y0, P))
+    run = integrate(scene_model(mech).compiled_rates(P), y0, 20.0, _acc(preset), events=model.events(y0, P))
     hits = sorted(run.events["contact lost (lam = 0)"], key=lambda h: h[0])
     assert [k for k, _, _ in hits] == [0, 1, 2]
     for k, t, yk in hits:
@@ -164,7 +164,7 @@ def test_a_singular_chart_is_named_on_the_grading_path():
     mech = mechanics("12.16")
     P = params(mech, 2, m=1.0, R=1.0, g=9.8)
     y0 = np.array([[0.5, 0.8], [0.0, 0.0], [-1.0, -1.0], [1e-5, 1.0]])      # theta, phi, theta', phi'
-    run = integrate(mech.lagrange_rates(P), y0, 2.0, _acc("default"))
+    run = integrate(scene_model(mech).compiled_rates(P), y0, 2.0, _acc("default"))
     assert not run.ok
     assert run.message.startswith("trajectory 1 approaches a singularity at t = ")
     assert "a coordinate singularity or a collision" in run.message

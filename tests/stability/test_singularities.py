@@ -17,6 +17,7 @@ from lagrade.library import load_problem, problem_ids
 from lagrade.numeric import compile_exprs
 from lagrade.reference import Mechanics
 from lagrade.sampling import rng_for, sample_points, state_arrays
+from lagrade.scene_model import scene_model
 
 from .helpers import mechanics, params, reference_rates
 
@@ -46,7 +47,7 @@ def test_a_spherical_pendulum_heading_for_the_pole_is_reported():
     mech = mechanics("12.16")
     P = params(mech, 1, m=1.0, R=1.0, g=9.8)
     y0 = np.array([[0.5], [0.0], [-1.0], [1e-5]])      # theta, phi, theta', phi'
-    for rates in (reference_rates(mech, P), mech.lagrange_rates(P)):   # numpy, and the grading path
+    for rates in (reference_rates(mech, P), scene_model(mech).compiled_rates(P)):   # numpy, and the grading path
         run = integrate(rates, y0, 2.0, replace(ACCURACY["default"], max_rhs_evals=10**5))
         assert not run.ok
         assert run.message.startswith("trajectory 1 approaches a singularity at t = "), run.message
@@ -71,7 +72,7 @@ def test_a_central_force_orbit_falling_into_r_zero_is_reported():
     mech = mechanics("12.48")
     P = params(mech, 1, m=1.0, k=1.0, a=0.1)
     y0 = np.array([[1.0], [0.0], [-0.5], [1e-4]])      # r, theta, r', theta': almost radial, falling in
-    for rates in (reference_rates(mech, P), mech.lagrange_rates(P)):   # numpy, and the grading path
+    for rates in (reference_rates(mech, P), scene_model(mech).compiled_rates(P)):   # numpy, and the grading path
         run = integrate(rates, y0, 5.0, replace(ACCURACY["default"], max_rhs_evals=10**5))
         assert not run.ok
         assert run.message.startswith("trajectory 1 approaches a singularity at t = 0.76"), run.message

@@ -17,6 +17,7 @@ import pytest
 import sympy as sp
 
 from lagrade.compare.trajectory import ACCURACY, compare_runs, estimate_stiffness, integrate
+from lagrade.scene_model import scene_model
 
 from .helpers import mechanics, params, reference_rates, rewritten_rates
 
@@ -155,7 +156,7 @@ def test_the_pendulum_near_its_separatrix_is_integrated_by_dop853(record_propert
     mech, P, th0, t, theta = _separatrix()
     acc = replace(ACCURACY["strict"], max_rhs_evals=10**6)   # 50 periods need ~115 000 evaluations
     y0 = np.array([[th0], [0.0]])
-    run = integrate(mech.lagrange_rates(P), y0, t[-1], acc, t_eval=t)
+    run = integrate(scene_model(mech).compiled_rates(P), y0, t[-1], acc, t_eval=t)
     assert run.ok, run.message
     ours = np.abs(run.y[0, 0] - theta).max()
     ref = solve_ivp(lambda _, y: [y[1], -9.8 * np.sin(y[0])], (0.0, t[-1]), y0[:, 0], method="DOP853",
@@ -166,7 +167,7 @@ def test_the_pendulum_near_its_separatrix_is_integrated_by_dop853(record_propert
     record_property("separatrix_error_ratio", float(ours / scipys))
     assert ours <= 10 * scipys, f"{run.method} ({run.note}): {ours / scipys:.3g} x scipy's DOP853 error"
     assert run.method == "DOP853" and not run.note, (run.method, run.note)
-    st = estimate_stiffness(mech.lagrange_rates(P), y0, t[-1], acc)
+    st = estimate_stiffness(scene_model(mech).compiled_rates(P), y0, t[-1], acc)
     assert not st.stiff and st.damping < 1e-6 and st.growth == pytest.approx(np.sqrt(9.8), rel=1e-4)
 
 
@@ -186,7 +187,7 @@ def test_no_chapter_scene_is_stiff_under_any_preset():
             for name, acc in ACCURACY.items():
                 pts = sample_points(mech, acc.trajectories, rng_for(pid, system.key, "trajectory"))
                 q, qd, _, P = state_arrays(mech, pts)
-                st = estimate_stiffness(mech.lagrange_rates(P), np.concatenate([q, qd]), system.horizon, acc)
+                st = estimate_stiffness(scene_model(mech).compiled_rates(P), np.concatenate([q, qd]), system.horizon, acc)
                 assert not st.stiff, f"{pid}{system.key} under {name}: {st.describe()}"
                 largest = max(largest, (float(st.index), f"{pid}{system.key} {name}"))
     print(f"\nthe largest stiffness index of the chapter: {largest[0]:.3g} ({largest[1]}), stiff above 300")

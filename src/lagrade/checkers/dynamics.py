@@ -109,33 +109,31 @@ class LagrangeInputs:
 def lagrange_inputs(ctx: Context, mech: Mechanics, part: Part, student_acc: Callable[[], Vectorized],
                     student_rows: Callable[[], list[sp.Expr]] | None = None, *,
                     everything: bool = False) -> LagrangeInputs:
-    """Scenes that declare switching (dissipation with a velocity sign/Abs): the scene's model and the
+    """The reference is the scene's model built from its declared effects (`scene_model`), on every
+    path. Scenes that declare switching (dissipation with a velocity sign/Abs): that model and the
     student's rows as switching models, each with its own switching events (the reference's contact
-    loss stops both). Others: the student's compiled rates
-    against the generic reference, with contact-loss events only for unilateral contact.
-    ``everything``: the switching path with all machinery compiled in (the benchmark's baseline)."""
+    loss stops both). Others, the case "no switching declared" of the same builder: its compiled
+    rates (no t argument for an autonomous scene) and its declared events, against the student's
+    compiled rates. ``everything``: the same path with the model built with all machinery (time
+    argument, contact events on every multiplier, switching on every velocity Abs/sign): the
+    baseline of benchmarks/effects.py."""
     q, qd, params, extra = _trajectory_inits(ctx, mech, part)
     n = len(mech.names)
     constants = np.concatenate([params, extra])
     labels = [*mech.names, *(f"{x}'" for x in mech.names)]
     y0 = np.concatenate([q, qd])
-    if student_rows is not None and (everything or machinery(mech).switching):
+    from lagrade.scene_model import scene_model
+
+    model = scene_model(mech, everything=everything)
+    if student_rows is not None and model.machinery.switching:
         stu, ref, events, stu_events = _switching_models(mech, part, student_rows(), params, constants, y0, everything)
         return LagrangeInputs(stu, ref, y0, labels, events, ("lagrange-switching", tuple(part.symbols)), True,
                               stu_events)
     stu = CompiledRates(student_acc(), 2 * n, constants, copied=n)
-    return LagrangeInputs(stu, mech.lagrange_rates(params), y0, labels, _contact_events(mech, y0, params),
+    # the events are the declared ones: contact loss only for unilateral contact (the comparison ends
+    # where the true motion leaves the surface, the model is not valid beyond it)
+    return LagrangeInputs(stu, model.compiled_rates(params), y0, labels, model.events(y0, params),
                           ("lagrange", tuple(part.symbols)), False)
-
-
-def _contact_events(mech: Mechanics, y0: np.ndarray, params: np.ndarray) -> list:
-    """Only a scene with unilateral contact watches its constraint force: the comparison ends where
-    the true motion leaves the surface (the model is not valid beyond it)."""
-    if "unilateral_contact" not in mech.system.effects or not mech.multiplier_exprs:
-        return []
-    from lagrade.scene_model import SceneModel
-
-    return SceneModel(mech).contact_events(y0, params)
 
 
 def _switching_models(mech: Mechanics, part: Part, rows: list[sp.Expr], params: np.ndarray,

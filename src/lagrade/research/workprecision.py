@@ -2,7 +2,7 @@
 
 The question it answers is the grader's own: what does a tighter preset buy, and what would another
 integrator cost for the same error? So the series that matters is the grading path itself, timed on
-the same objects grading uses: the reference rates ``Mechanics.lagrange_rates(params)`` (a
+the same objects grading uses: the reference rates ``scene_model(mech).compiled_rates(params)`` (a
 `CompiledRates`, machine code where symengine compiles the rates) integrated by
 `lagrade.compare.trajectory.integrate` with an `Accuracy` preset (method "auto" resolved as
 `compare_runs` resolves it, 201 sample times as grading compares at) over K sampled states in one batch.
@@ -48,6 +48,7 @@ from lagrade.library import load_problem
 from lagrade.numeric import CompiledRates, compile_numpy, is_machine_code
 from lagrade.reference import Mechanics
 from lagrade.sampling import rng_for, sample_points, state_arrays
+from lagrade.scene_model import scene_model
 
 TOLERANCES = tuple(10.0 ** -e for e in range(3, 13))
 #: the grader's sample times per comparison (``integrate``'s default ``samples``)
@@ -181,7 +182,7 @@ def _timed(fn, repeat: int):
 
 def single_rates(sc: Scene, k: int) -> Callable[[float, np.ndarray], np.ndarray]:
     """The grader's compiled rates of state k alone, as scipy calls them: (t, y (2n,)) -> (2n,)."""
-    rates = sc.mech.lagrange_rates(sc.params[:, k:k + 1])
+    rates = scene_model(sc.mech).compiled_rates(sc.params[:, k:k + 1])
     dim = sc.y0.shape[0]
 
     def fun(t: float, y: np.ndarray) -> np.ndarray:
@@ -232,7 +233,7 @@ def grading_method(sc: Scene, acc: Accuracy) -> str:
     """What ``compare_runs`` integrates with: "auto" resolved by the stiffness estimate."""
     if acc.method != "auto":
         return acc.method
-    rates = sc.mech.lagrange_rates(sc.params)
+    rates = scene_model(sc.mech).compiled_rates(sc.params)
     st = estimate_stiffness(rates, sc.y0, sc.horizon, acc)
     return stiff_method(st) if st.stiff else "DOP853"
 
@@ -244,7 +245,7 @@ def compiled_f(rates) -> object:
 
 def is_compiled(sc: Scene) -> bool:
     """Whether the grading path runs machine code here (symengine could compile the rates)."""
-    return is_machine_code(compiled_f(sc.mech.lagrange_rates(sc.params)))
+    return is_machine_code(compiled_f(scene_model(sc.mech).compiled_rates(sc.params)))
 
 
 def reference(sc: Scene, t_eval: np.ndarray) -> Reference:
@@ -285,7 +286,7 @@ def _grading_row(sc: Scene, acc: Accuracy, method: str, t_eval: np.ndarray, y_re
     preset, the resolved method, the sample times. ``numpy_stages``: the same, with the rates as
     numpy code instead of machine code (what the compiler buys)."""
     K = sc.y0.shape[1]
-    rates = sc.mech.lagrange_rates(sc.params)
+    rates = scene_model(sc.mech).compiled_rates(sc.params)
     if numpy_stages:
         n = len(sc.mech.names)
         exprs = sc.mech.accelerations_symbolic
