@@ -12,6 +12,10 @@ effects call for, and nothing else:
 - the multipliers (constraint forces) only when ``constraint_force`` is declared;
 - contact-loss events (a multiplier reaching zero) only for ``unilateral_contact``.
 
+`scene_model(mech)` is the one model of a scene grading integrates (its second-order parts): a scene
+that declares no switching runs its `SceneModel.compiled_rates` (one compiled call of exactly these
+arguments) and declared events; a switching scene runs a fresh `SceneModel` per run (it keeps branches).
+
 ``SceneModel(mech, everything=True)`` builds all of it regardless of the declarations: the
 `benchmarks/effects.py` baseline that measures what the unused machinery costs.
 
