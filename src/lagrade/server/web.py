@@ -4,9 +4,9 @@ fetched from anywhere; math is presentation MathML, which browsers render native
 from __future__ import annotations
 
 import json
+import mimetypes
 import secrets
 import tempfile
-from html import escape
 from pathlib import Path
 from typing import Annotated
 
@@ -24,6 +24,9 @@ templates = Jinja2Templates(directory=str(TEMPLATES))
 #: a page may use its own inline script and style, and nothing from elsewhere
 CSP = ("default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src 'self' data:; "
        "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'")
+#: the class page (the HTML report) links its own style.css and report.js: from this server only
+CLASS_CSP = CSP.replace("script-src 'unsafe-inline'", "script-src 'self' 'unsafe-inline'") \
+    .replace("style-src 'unsafe-inline'", "style-src 'self' 'unsafe-inline'")
 
 
 def _server(request: Request):
@@ -226,7 +229,7 @@ def class_page(path: str, request: Request):
         try:
             write_report(server.db.gradebook(), Path(tmp))
         except Exception as exc:  # noqa: BLE001  (nothing graded yet, a database away)
-            return HTMLResponse(f"<p>no class report yet: {escape(str(exc))}</p>", status_code=503)
+            return error_page(request, 503, f"no class report yet: {exc}")
         try:  # a NUL byte or a name too long for the file system is no page either (not a 500)
             target = (Path(tmp) / (path or "index.html")).resolve()
             found = target.is_relative_to(Path(tmp).resolve()) and target.is_file()
@@ -234,9 +237,14 @@ def class_page(path: str, request: Request):
             found = False
         if not found:
             raise HTTPException(404, f"no page {path[:80]!r} in the class report")
-        kind = "text/html; charset=utf-8" if target.suffix == ".html" else "application/octet-stream"
+        kind = {".html": "text/html; charset=utf-8", ".css": "text/css; charset=utf-8",
+                ".js": "text/javascript; charset=utf-8"}.get(target.suffix) or \
+            mimetypes.guess_type(target.name)[0] or "application/octet-stream"
         response = Response(target.read_bytes(), media_type=kind)
-    response.headers["Content-Security-Policy"] = CSP
+    response.headers["Content-Security-Policy"] = CLASS_CSP
+    response.headers["X-Content-Type-Options"] = "nosniff"
+    response.headers["Referrer-Policy"] = "no-referrer"
+    response.headers["Cache-Control"] = "no-store"  # the class's grades
     return response
 
 
