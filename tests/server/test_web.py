@@ -33,7 +33,7 @@ def test_problem_page_shows_what_show_and_template_print(quiet_app):
         assert str(escape(printed.strip())) in page, command
     for name in ("f:L", "f:eom", "f:a:m1", "f:a:m4", "f:S_t:S3", "f:a_case:m2"):
         assert f'name="{name}"' in page, name
-    assert re.search(r'<textarea name="f:eom"', page)
+    assert re.search(r'<textarea id="f-eom" name="f:eom"', page)
 
 
 def test_preview_reads_text_and_latex_as_answer_toml_does(quiet_app):
@@ -74,7 +74,7 @@ def test_submit_shows_verdicts_and_earlier_attempts(graded):
         else:
             form[f"f:{part}"] = value
     page = browser.post("/p/12.22/check", data=form).text
-    verdicts = dict(re.findall(r'<tr data-part="([^"]+)">.*?data-verdict>(\w+)<', page, flags=re.DOTALL))
+    verdicts = dict(re.findall(r'<tr data-part="([^"]+)">.*?data-verdict[^>]*>(\w+)<', page, flags=re.DOTALL))
     assert verdicts["a_case"] == "incorrect" and verdicts["L"] == "correct"
     assert "<math" in page  # the answer as read, rendered
     upload = browser.post("/p/12.22/check", data={"csrf": token},

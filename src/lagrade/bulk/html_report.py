@@ -52,6 +52,9 @@ figure { margin: .5em 0 1.5em; } figure img { max-width: 100%; height: auto; bor
 figcaption { font-size: .9em; color: #444; }
 table.parts td.answer > .formula { display: block; overflow-x: auto; max-width: 100%; padding-bottom: .2em; }
 table.parts td.feedback { overflow-wrap: anywhere; }
+.formula math { display: block; max-width: 100%; padding: .15em 0; }
+.formula math > mrow { display: flex; flex-wrap: wrap; align-items: baseline; row-gap: .35em; }
+.formula math > mrow > mo { padding: 0 .2em; }
 .override { background: #fef9c3; } .why { display: block; font-size: .9em; color: #854d0e; }
 .note { border-left: 4px solid #b91c1c; padding: .3em .8em; background: #fef2f2; }
 @media (max-width: 700px) {
@@ -93,6 +96,10 @@ document.querySelectorAll('table.sortable').forEach(function (table) {
       rows.forEach(function (r) { body.appendChild(r); });
     });
   });
+});
+// A box that scrolls (a formula wider than its cell) is reachable by keyboard: a tab stop each.
+document.querySelectorAll('.formula, .scroll, pre').forEach(function (e) {
+  if (e.scrollWidth > e.clientWidth || e.scrollHeight > e.clientHeight) e.setAttribute('tabindex', '0');
 });
 // How wide the page is laid out: wider than the window means a sideways scroll (a test reads it).
 document.body.setAttribute('data-page-width', String(document.documentElement.scrollWidth));

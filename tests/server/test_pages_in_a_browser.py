@@ -1,0 +1,192 @@
+"""The pages as students and the instructor live in them (issue 36), in Debian's Chromium driven by
+Playwright (the system browser, nothing downloaded): a 390 px phone keeps its width after a verdict,
+axe-core (``axe-playwright-python``, which bundles it) finds no serious or critical violation on any
+student or instructor page, and the class page loads its own style and script under the server's
+Content-Security-Policy. Skipped only without Chromium.
+
+``LAGRADE_SCREENSHOT_DIR=/some/folder`` also keeps a screenshot of each page there."""
+
+from __future__ import annotations
+
+import os
+import shutil
+from pathlib import Path
+
+import pytest
+
+from lagrade.server.tokens import INSTRUCTOR, issue
+
+pytestmark = pytest.mark.slow
+CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
+if not os.path.exists(CHROMIUM):
+    pytest.skip("no chromium (apt-get install -y chromium; .ci/run does)", allow_module_level=True)
+
+from axe_playwright_python.sync_playwright import Axe  # noqa: E402  (a test dependency: lagrade[test])
+from playwright import sync_api  # noqa: E402
+
+FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+         "--disable-component-update", "--disable-sync"]
+PHONE = {"width": 390, "height": 844}
+DESKTOP = {"width": 1100, "height": 1000}
+#: 12.14 with a third of the coupling term: a wrong motion, so the page shows its picture too
+WRONG_L = ("(m1 + m2)*l1^2*theta1_d^2/2 + m2*l2^2*theta2_d^2/2 + m2*l1*l2*theta1_d*theta2_d*cos(theta1 - theta2)/3"
+           " + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2)")
+SERIOUS = ("serious", "critical")
+
+
+@pytest.fixture(scope="module")
+def chromium():
+    with sync_api.sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        try:
+            yield browser
+        finally:
+            browser.close()
+
+
+def _shot(page, name: str) -> None:
+    folder = os.environ.get("LAGRADE_SCREENSHOT_DIR")
+    if folder:
+        Path(folder).mkdir(parents=True, exist_ok=True)
+        page.screenshot(path=str(Path(folder) / f"{name}.png"), full_page=True)
+
+
+def sign_in(page, live_url: str, token: str) -> None:
+    """The sign-in link, and its confirming button where the page asks for one."""
+    page.goto(f"{live_url}/login?token={token}")
+    confirm = page.locator('form[action="/login"] button[type=submit]')
+    if confirm.count():
+        confirm.click()
+        page.wait_for_url(f"{live_url}/")
+
+
+def _width(page) -> int:
+    return page.evaluate("() => Math.max(document.documentElement.scrollWidth, document.body.scrollWidth)")
+
+
+def _verdict(page, live_url: str) -> None:
+    page.goto(f"{live_url}/p/12.14")
+    page.fill('input[name="f:L"]', WRONG_L)
+    page.locator('[data-field="L"] [data-preview][data-ready="yes"] math').wait_for(timeout=15000)
+    page.click("#submit")
+    page.locator('#result[data-state="graded"]').wait_for(timeout=120000)
+    page.wait_for_function("() => { const i = document.querySelector('[data-plot] img'); return !i || i.complete; }",
+                           timeout=15000)
+
+
+def test_a_phone_keeps_its_width_after_a_verdict(graded, live_url, chromium):
+    """Issue 36: at 390 px the page grew to 929 px after a verdict (verdict, score and feedback
+    off-screen), and the preview ran past its box."""
+    page = chromium.new_page(viewport=PHONE, is_mobile=True, has_touch=True)
+    try:
+        sign_in(page, live_url, issue(graded[0].state.server.secret, "phone-student"))
+        _verdict(page, live_url)
+        _shot(page, "phone-verdict")
+        assert _width(page) == PHONE["width"]
+        for cell in ("[data-verdict]", "[data-score-of]", "td.feedback", "[data-plot] img"):
+            for el in page.locator(f"#result {cell}").all():
+                box = el.bounding_box()
+                assert box and box["x"] >= 0 and box["x"] + box["width"] <= PHONE["width"] + 0.5, (cell, box)
+        # the preview of a long Lagrangian stays in its box: it wraps, or scrolls inside it
+        page.fill('input[name="f:L"]', WRONG_L + " + m1*l1^2*theta1_d^2/7 + m2*l2^2*theta2_d^2/11")
+        page.locator('[data-field="L"] [data-preview][data-ready="yes"] math').wait_for(timeout=15000)
+        fits = page.evaluate("""() => Array.from(document.querySelectorAll('[data-preview]')).map(p => {
+            const box = p.getBoundingClientRect(), style = getComputedStyle(p);
+            return box.right <= window.innerWidth + 0.5 && (p.scrollWidth <= p.clientWidth + 1
+                   || ['auto', 'scroll'].includes(style.overflowX));
+        })""")
+        assert all(fits), fits
+        assert _width(page) == PHONE["width"]
+    finally:
+        page.close()
+
+
+def test_the_read_as_cell_is_not_clipped_on_a_desktop(graded, live_url, chromium):
+    """Issue 36: on a desktop the "read as" cell was cut at 26em with the table's half empty."""
+    page = chromium.new_page(viewport=DESKTOP)
+    try:
+        sign_in(page, live_url, issue(graded[0].state.server.secret, "desktop-student"))
+        _verdict(page, live_url)
+        _shot(page, "desktop-verdict")
+        hidden = page.evaluate("""() => Array.from(document.querySelectorAll('#result [data-echo] .readas'))
+            .map(e => e.scrollWidth - e.clientWidth)""")
+        assert hidden and max(hidden) <= 1, hidden
+        assert _width(page) <= DESKTOP["width"]
+    finally:
+        page.close()
+
+
+def _axe(page, name: str) -> list[str]:
+    results = Axe().run(page)
+    bad = [f"{name}: {v['id']} ({v['impact']}) x{len(v['nodes'])}: {v['help']}: "
+           f"{', '.join(str(n['target']) for n in v['nodes'][:3])}"
+           for v in results.response["violations"] if v["impact"] in SERIOUS]
+    return bad
+
+
+def test_axe_finds_no_serious_violation_on_any_page(graded, live_url, chromium):
+    """Every page a student or the instructor sees, in both widths: the sign-in page and its
+    confirmation, the problems, a problem before and after a verdict (with its picture), an error
+    page, the instructor's problems, the class page and a student's page of it."""
+    secret = graded[0].state.server.secret
+    found: list[str] = []
+    for viewport in (DESKTOP, PHONE):
+        context = chromium.new_context(viewport=viewport)
+        page = context.new_page()
+        try:
+            tag = f"{viewport['width']}px"
+            page.goto(f"{live_url}/")
+            found += _axe(page, f"{tag} sign-in")
+            page.goto(f"{live_url}/login?token={issue(secret, 'axe-student')}")
+            found += _axe(page, f"{tag} sign-in link")
+            sign_in(page, live_url, issue(secret, "axe-student"))
+            found += _axe(page, f"{tag} problems")
+            page.goto(f"{live_url}/p/12.22")
+            found += _axe(page, f"{tag} problem")
+            _verdict(page, live_url)
+            found += _axe(page, f"{tag} verdict")
+            page.goto(f"{live_url}/p/12.22?attempt=999999")
+            found += _axe(page, f"{tag} error")
+        finally:
+            context.close()
+        context = chromium.new_context(viewport=viewport)
+        page = context.new_page()
+        try:
+            sign_in(page, live_url, issue(secret, INSTRUCTOR))
+            found += _axe(page, f"{tag} instructor's problems")
+            page.goto(f"{live_url}/class/")
+            page.locator("body[data-loaded]").wait_for(timeout=15000)
+            found += _axe(page, f"{tag} class page")
+            page.locator("a[href^='students/']").first.click()
+            page.locator("body[data-loaded]").wait_for(timeout=15000)
+            found += _axe(page, f"{tag} a student's page")
+        finally:
+            context.close()
+    assert not found, "\n".join(found)
+
+
+def test_the_class_page_loads_its_own_style_and_script(graded, live_url, chromium):
+    """Issue 36: the server's own Content-Security-Policy refused the report's style.css and report.js."""
+    context = chromium.new_context(viewport=DESKTOP)
+    page = context.new_page()
+    refused: list[str] = []
+    page.on("console", lambda m: refused.append(m.text) if "Content Security Policy" in m.text else None)
+    loaded: dict[str, tuple[int, str]] = {}
+    page.on("response", lambda r: loaded.__setitem__(r.url.rsplit("/", 1)[-1], (r.status, r.headers.get(
+        "content-type", ""))))
+    try:
+        sign_in(page, live_url, issue(graded[0].state.server.secret, INSTRUCTOR))
+        page.goto(f"{live_url}/class/")
+        page.locator("body[data-loaded]").wait_for(timeout=15000)
+        _shot(page, "class-page")
+        assert not refused, refused
+        assert page.get_attribute("body", "data-errors") == "0"
+        assert loaded["style.css"][0] == 200 and loaded["style.css"][1].startswith("text/css"), loaded
+        assert loaded["report.js"][0] == 200 and "javascript" in loaded["report.js"][1], loaded
+        # the style applies (the report's 70em column, not the browser's full width) and the script ran
+        assert page.evaluate("() => getComputedStyle(document.body).maxWidth") != "none"
+        assert page.locator("th.sortable").count() > 0
+        csp = page.evaluate("async () => (await fetch('/class/')).headers.get('content-security-policy')")
+        assert "default-src 'none'" in csp
+    finally:
+        context.close()
