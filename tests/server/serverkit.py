@@ -49,6 +49,21 @@ def make_config(tmp: Path, **kw) -> ServerConfig:
     return ServerConfig(assignment=path, **kw)
 
 
+def sign_in(app, client, student: str) -> str:
+    """Sign a browser (a TestClient) in as ``student`` as a person does: the sign-in link's page, then
+    its button (a POST with the page's login-CSRF token). Returns the session's CSRF token."""
+    from lagrade.server.state import SESSION_COOKIE
+    from lagrade.server.tokens import csrf_token
+
+    token = issue(app.state.server.secret, student)
+    page = client.get("/login", params={"token": token})
+    assert page.status_code == 200, page.text
+    form = re.search(r'name="login_csrf" value="([^"]+)"', page.text).group(1)
+    r = client.post("/login", data={"token": token, "login_csrf": form}, follow_redirects=False)
+    assert r.status_code == 303, r.text
+    return csrf_token(app.state.server.secret, client.cookies[SESSION_COOKIE])
+
+
 def bearer(app, student: str) -> dict[str, str]:
     return {"Authorization": f"Bearer {issue(app.state.server.secret, student)}"}
 

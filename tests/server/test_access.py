@@ -7,10 +7,10 @@ from __future__ import annotations
 import re
 
 from fastapi.testclient import TestClient
-from serverkit import bearer, make_config
+from serverkit import bearer, make_config, sign_in
 
 from lagrade.server.app import create_app
-from lagrade.server.tokens import csrf_token, issue, student_of
+from lagrade.server.tokens import issue, student_of
 
 ANSWER = {"answer": {"L": "m1*x_d^2/2"}}
 API = [("get", "/api/v1/problems", None), ("get", "/api/v1/problems/12.22", None),
@@ -66,21 +66,18 @@ def test_closed_server_pages_ask_to_sign_in(quiet_app):
     app, client = quiet_app
     assert "Paste the token" in client.get("/").text
     assert client.get("/login", params={"token": "lg1.bad.bad"}).status_code == 401
-    r = client.get("/login", params={"token": issue(app.state.server.secret, "alice")}, follow_redirects=False)
-    assert r.status_code == 303
+    sign_in(app, client, "alice")
     assert "signed in as" in client.get("/").text
 
 
 def _sign_in(app, client, student="alice") -> str:
-    token = issue(app.state.server.secret, student)
-    client.get("/login", params={"token": token})
-    return token
+    """Signed in; the session's CSRF token."""
+    return sign_in(app, client, student)
 
 
 def test_forms_and_cookie_calls_need_the_csrf_token(quiet_app):
     app, client = quiet_app
-    token = _sign_in(app, client)
-    good = csrf_token(app.state.server.secret, token)
+    good = _sign_in(app, client)
     page = client.get("/p/12.22").text
     assert f'name="csrf" value="{good}"' in page
     # the form without, or with a wrong, token: refused and nothing stored
@@ -158,8 +155,7 @@ def test_bad_requests_get_one_line(quiet_app):
 def test_the_page_says_when_checks_are_rate_limited(tmp_path):
     app = create_app(make_config(tmp_path, checks_per_minute=1, check_burst=1), grade=False)
     with TestClient(app) as client:
-        token = _sign_in(app, client)
-        good = csrf_token(app.state.server.secret, token)
+        good = _sign_in(app, client)
         assert client.post("/p/12.22/check", data={"f:L": "m1", "csrf": good}).status_code == 200
         r = client.post("/p/12.22/check", data={"f:L": "m2*x_d", "csrf": good})
         assert r.status_code == 429 and "too many checks" in r.text and 'value="m2*x_d"' in r.text

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from serverkit import PICTURE_CHUNKS, bearer, png_chunks
+from serverkit import PICTURE_CHUNKS, bearer, png_chunks, sign_in
 
-from lagrade.server.tokens import INSTRUCTOR, issue
+from lagrade.server.tokens import INSTRUCTOR
 
 pytestmark = pytest.mark.slow
 
@@ -59,7 +59,7 @@ def test_a_wrong_motion_gets_its_picture_and_only_its_owner_sees_it(graded):
 
     # the page shows it to its owner, with words only around it
     browser = type(client)(app)
-    browser.get("/login", params={"token": issue(app.state.server.secret, "plot-owner")})
+    sign_in(app, browser, "plot-owner")
     page = browser.get(f"/p/12.14?attempt={sid}").text
     assert f'<img src="/api/v1/submissions/{sid}/plot.png" alt="' in page
     alt = page.split(f'<img src="/api/v1/submissions/{sid}/plot.png" alt="')[1].split('"')[0]

@@ -38,6 +38,7 @@ def test_type_preview_submit_and_read_the_verdict(graded, live_url, tmp_path):
             errors = []
             page.on("pageerror", lambda e: errors.append(str(e)))
             page.goto(f"{live_url}/login?token={token}")
+            page.click("text=sign in as browser-student")  # the link asks before it signs in
             page.click("text=12.22")
             page.wait_for_url("**/p/12.22")
             field = page.locator('input[name="f:L"]')
@@ -80,6 +81,8 @@ def test_a_wrong_motion_shows_its_picture(graded, live_url, tmp_path):
             page = browser.new_page(viewport={"width": 1100, "height": 1400})
             page.on("request", lambda r: requests.append(r.url))
             page.goto(f"{live_url}/login?token={token}")
+            page.click("text=sign in as browser-plot")
+            page.wait_for_url(f"{live_url}/")
             page.goto(f"{live_url}/p/12.14")
             page.fill('input[name="f:L"]', wrong)
             page.click("#submit")

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from serverkit import GOLDEN, REPO, bearer, expectations, golden, toml_answer
+from serverkit import GOLDEN, REPO, bearer, expectations, golden, sign_in, toml_answer
 
 from lagrade.cli import main
 from lagrade.server.tokens import INSTRUCTOR
@@ -129,9 +129,7 @@ def test_export_and_report_read_the_server_database(graded):
 def test_the_class_page_is_the_instructors(graded, instructor):
     app, client, h = graded
     assert client.get("/class/", headers=h).status_code == 401
-    from lagrade.server.tokens import issue
-
     c2 = type(client)(app)
-    c2.get("/login", params={"token": issue(app.state.server.secret, instructor)})
+    sign_in(app, c2, instructor)
     page = c2.get("/class/")
     assert page.status_code == 200 and "12.22" in page.text

@@ -21,6 +21,8 @@ from serverkit import GOLDEN, make_config  # noqa: E402
 
 from lagrade.server.app import create_app  # noqa: E402
 from lagrade.server.lti import LtiConfigError, load_config, student_id  # noqa: E402
+from lagrade.server.state import SESSION_COOKIE, SESSION_SECONDS  # noqa: E402
+from lagrade.server.tokens import student_of  # noqa: E402
 
 
 def _socket() -> socket.socket:
@@ -115,6 +117,11 @@ def test_launch_signs_in_and_the_grade_reaches_the_lms_gradebook(lms):
         assert "url=/p/12.14" in r.text  # on to the link's problem
         student = student_id(platform.url, platform.deployment_id, "u-ada")
         assert _signed_in(browser, tool_url) == student  # no token handed out; not on the roster either
+        # the cookie is a session of this browser, HttpOnly, never a token that signs in anywhere
+        cookie = browser.cookies[SESSION_COOKIE]
+        assert "httponly" in r.headers["set-cookie"].lower()
+        assert student_of(app.state.server.secret, cookie) is None
+        assert app.state.server.db.session_student(cookie, SESSION_SECONDS) == student
         page = browser.get(f"{tool_url}/p/12.14")
         assert page.status_code == 200 and f"data-student>{student}<" in page.text
 
@@ -196,6 +203,21 @@ def _forged(platform: Platform, tool_url: str, login: str, link: str, **how) -> 
     expires_in = how.pop("expires_in", 300)
     token = platform.id_token(body, key=key, expires_in=expires_in, **how)
     return browser.post(f"{tool_url}/lti/launch", data={"id_token": token, "state": params["state"]}), browser
+
+
+def test_signing_out_ends_the_lti_session_and_a_copy_of_its_cookie(lms):
+    platform, tool_url, app = lms
+    platform.user("u-grace", "Grace Hopper")
+    platform.link("link-out", "12.22")
+    with httpx.Client(timeout=60) as browser:
+        assert _post(browser, _launch(platform, browser, "u-grace", "link-out")).status_code == 200
+        sid = browser.cookies[SESSION_COOKIE]
+        page = browser.get(f"{tool_url}/")
+        assert browser.post(f"{tool_url}/logout", data={"csrf": _csrf(page.text)},
+                            follow_redirects=False).status_code == 303
+    assert app.state.server.db.session_student(sid, SESSION_SECONDS) is None
+    with httpx.Client(timeout=60, cookies={SESSION_COOKIE: sid}) as copy:
+        assert _signed_in(copy, tool_url) is None
 
 
 @pytest.mark.parametrize("how", [

@@ -25,12 +25,12 @@ from serverkit import (
     bearer,
     golden,
     png_chunks,
+    sign_in,
     toml_answer,
 )
 
 from lagrade.reading.load import load_answer
 from lagrade.library import load_problem
-from lagrade.server.tokens import csrf_token, issue
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from leaks import reveals, squash
@@ -162,9 +162,7 @@ def test_no_api_response_reveals_a_reference(graded, pid):
 def test_no_page_reveals_a_reference(graded, pid):
     app, client, _ = graded
     browser = type(client)(app)
-    token = issue(app.state.server.secret, f"browser-{pid}")
-    browser.get("/login", params={"token": token})
-    csrf = csrf_token(app.state.server.secret, token)
+    csrf = sign_in(app, browser, f"browser-{pid}")
     for url in ("/", f"/p/{pid}"):
         r = browser.get(url)
         assert r.status_code == 200

@@ -6,7 +6,7 @@ answered 500 (TestClient re-raises the server's exception: such a test fails wit
 from __future__ import annotations
 
 import pytest
-from serverkit import bearer
+from serverkit import bearer, sign_in
 
 BEYOND = str(2**63)  # one past the largest id the database holds
 IDS = [BEYOND, str(10**40), "-1", "0", "abc", "1.5", "1e3", "%00"]
@@ -30,12 +30,11 @@ def test_the_largest_id_is_just_not_found(quiet_app):
 def test_a_class_page_that_cannot_exist(quiet_app, instructor, page, monkeypatch):
     """A NUL byte, or a name longer than the file system takes, was a 500 (ValueError, OSError)."""
     from lagrade.bulk import html_report
-    from lagrade.server.tokens import issue
 
     monkeypatch.setattr(html_report, "write_report", lambda book, folder: (folder / "index.html").write_text("ok"))
     app, client = quiet_app
     assert client.get("/class/").status_code == 401
-    client.get("/login", params={"token": issue(app.state.server.secret, instructor)})  # the page wants a browser
+    sign_in(app, client, instructor)  # the page wants a browser
     r = client.get(f"/class/{page}")
     assert r.status_code == 404, (page[:20], r.status_code)
     assert client.get("/class/").text == "ok"  # the report itself is served

@@ -7,7 +7,7 @@ import os
 
 import pytest
 from fastapi.testclient import TestClient
-from serverkit import GOLDEN, bearer, make_config, toml_answer
+from serverkit import GOLDEN, bearer, make_config, sign_in, toml_answer
 
 from lagrade.server.app import create_app
 
@@ -56,7 +56,7 @@ def test_graded_into_the_gradebook(tmp_path, pg_url):
         assert alice.submitted and 0 < alice.points < alice.possible
         assert {p["part"]: p["verdict"] for p in alice.parts} == verdicts
         page = type(client)(app)
-        from lagrade.server.tokens import INSTRUCTOR, issue
+        from lagrade.server.tokens import INSTRUCTOR
 
-        page.get("/login", params={"token": issue(app.state.server.secret, INSTRUCTOR)})
+        sign_in(app, page, INSTRUCTOR)
         assert "alice" in page.get("/class/").text

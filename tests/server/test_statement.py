@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from serverkit import PICTURE_CHUNKS, bearer, png_chunks
+from serverkit import PICTURE_CHUNKS, bearer, png_chunks, sign_in
 
 from lagrade.figure import draw
 from lagrade.library import load_problem
@@ -14,8 +14,7 @@ from lagrade.statement import statement_html
 
 def test_the_page_shows_the_statement_with_math_and_the_figure(quiet_app):
     app, client = quiet_app
-    token = bearer(app, "alice")["Authorization"].split()[1]
-    client.get(f"/login?token={token}")
+    sign_in(app, client, "alice")
     page = client.get("/p/12.14").text
     block = re.search(r"<div class=\"statement\" data-statement>(.*?)</div>", page, re.S).group(1)
     assert "<math" in block and "&#952;" in block  # theta1 as the preview writes it: θ with a subscript

@@ -6,16 +6,12 @@ from __future__ import annotations
 import re
 
 import pytest
-from serverkit import GOLDEN, toml_answer
-
-from lagrade.server.tokens import csrf_token, issue
+from serverkit import GOLDEN, sign_in, toml_answer
 
 
 def _browser(app, client, student):
     browser = type(client)(app)
-    token = issue(app.state.server.secret, student)
-    browser.get("/login", params={"token": token})
-    return browser, {"X-CSRF-Token": csrf_token(app.state.server.secret, token)}
+    return browser, {"X-CSRF-Token": sign_in(app, browser, student)}
 
 
 def test_problem_page_shows_what_show_and_template_print(quiet_app):

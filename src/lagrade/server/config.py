@@ -42,5 +42,12 @@ class ServerConfig(BaseModel):
     preview_seconds: float = Field(5, gt=0)
     #: LTI 1.3: the platforms (LMSs) this server takes launches from and sends grades to (lti.py)
     lti: Path | None = None
+    #: refused tokens a minute, and at once, from one client address (then 429): a guessing bound
+    failed_sign_ins_per_minute: float = Field(10, gt=0)
+    failed_sign_in_burst: int = Field(10, ge=1)
+    #: the server is reached over HTTPS only (TLS here, or a reverse proxy in front): cookies are
+    #: always `Secure` (else they are when the request came over HTTPS, or from a trusted proxy that
+    #: says so in X-Forwarded-Proto: uvicorn's --forwarded-allow-ips)
+    https: bool = False
     #: how long a check request waits for its grade before answering "queued" (202)
     wait_seconds: float = Field(120, gt=0)

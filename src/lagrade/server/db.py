@@ -113,6 +113,14 @@ server_submissions = Table(
     sqlite_autoincrement=True,
 )
 
+#: browser sessions: the cookie holds a random session id, never the student's token; the table keeps
+#: its hash (a copy of the database does not sign anyone in), and sign-out deletes the row
+server_sessions = Table(
+    "server_sessions", metadata,
+    Column("key", String(64), primary_key=True), Column("student", String(200), nullable=False),
+    Column("created_at", Float, nullable=False),
+)
+
 
 class NotAServerDatabase(ValueError):
     """An existing file that is not a course server's database (empty, another program's, a
@@ -191,6 +199,12 @@ server_plots = Table(
 )
 
 
+def _session_key(sid: str) -> str:
+    import hashlib
+
+    return hashlib.sha256(sid.encode()).hexdigest()
+
+
 def _now() -> str:
     return time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime()) + "Z"
 
@@ -235,7 +249,7 @@ class Database:
             Store(self.sqlite_path).close()  # the gradebook schema, exactly as `lagrade grade` makes it
             self.engine: Engine = create_engine(self.url, connect_args={"timeout": 30, "check_same_thread": False})
             event.listen(self.engine, "connect", _sqlite_pragmas)
-            metadata.create_all(self.engine, tables=[server_submissions, server_plots])
+            metadata.create_all(self.engine, tables=[server_submissions, server_plots, server_sessions])
         else:
             self.engine = create_engine(self.url, pool_pre_ping=True)
             metadata.create_all(self.engine)
@@ -375,6 +389,29 @@ class Database:
                 value = make()
                 self._set_meta(c, key, value)
         return value
+
+    # ------------------------------------------------------------------ browser sessions
+
+    def open_session(self, student: str) -> str:
+        """A new session of ``student``: its id (the cookie's value), random, stored only as a hash."""
+        sid = secrets.token_urlsafe(32)
+        with self._write, self.engine.begin() as c:
+            c.execute(insert(server_sessions).values(key=_session_key(sid), student=student, created_at=time.time()))
+        return sid
+
+    def session_student(self, sid: str, max_age: float) -> str | None:
+        """The student of a live session (not ended, younger than ``max_age`` seconds), else None."""
+        if not sid or len(sid) > 100:
+            return None
+        with self.engine.connect() as c:
+            row = c.execute(select(server_sessions.c.student, server_sessions.c.created_at)
+                            .where(server_sessions.c.key == _session_key(sid))).first()
+        return row[0] if row is not None and time.time() - row[1] < max_age else None
+
+    def end_session(self, sid: str) -> None:
+        """Sign-out: the session is gone, whoever holds a copy of its cookie."""
+        with self._write, self.engine.begin() as c:
+            c.execute(delete(server_sessions).where(server_sessions.c.key == _session_key(sid)))
 
     @staticmethod
     def _add_student(c, name: str) -> None:

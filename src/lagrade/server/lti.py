@@ -606,7 +606,8 @@ async def login(request: Request):
 async def launch(request: Request):
     """The launch: the id_token verified; the LTI user signed in as their lagrade student."""
     from lagrade.server import web
-    from lagrade.server.tokens import INSTRUCTOR, issue
+    from lagrade.server.state import SESSION_COOKIE
+    from lagrade.server.tokens import INSTRUCTOR
 
     lti = _lti(request)
     form = await _form(request)
@@ -643,7 +644,12 @@ async def launch(request: Request):
             f"Continue</a></p></body></html>")
     response = HTMLResponse(page)
     response.headers["Content-Security-Policy"] = web.CSP
-    web._set_session(response, issue(lti.server.secret, student))
+    # a session of this browser (sign-out ends it), never the student's permanent token in a cookie
+    old = request.cookies.get(SESSION_COOKIE)
+    if old:
+        await asyncio.to_thread(lti.server.db.end_session, old)  # one browser, one session
+    sid = await asyncio.to_thread(lti.server.db.open_session, student)
+    web._set_session(request, response, sid)
     return response
 
 

@@ -4,6 +4,7 @@ the database, the grading queue, the token secret, the rate limits, and who sent
 from __future__ import annotations
 
 import hmac
+import logging
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -16,12 +17,15 @@ from lagrade.server.preview import PreviewWorker
 from lagrade.server.tokens import INSTRUCTOR, csrf_token, student_of
 
 SESSION_COOKIE = "lagrade_session"
+#: how long a browser session lasts (a term), unless signed out before
+SESSION_SECONDS = 120 * 24 * 3600
+log = logging.getLogger("lagrade.server")
 LIST_KINDS = ("eom", "hamilton_eqs", "expression_set", "names", "conserved")
 
 
 @dataclass
 class Who:
-    """Who sent a request: the student id, and the session token if it came by cookie (a browser)."""
+    """Who sent a request: the student id, and the session id if it came by cookie (a browser)."""
 
     student: str
     session: str | None = None
@@ -62,6 +66,9 @@ class Server:
             raise
         self.roster = set(config.roster) if config.roster is not None else None
         self.check_limit = RateLimit(config.checks_per_minute, config.check_burst)
+        #: tokens refused (sign-in form, sign-in link, Bearer header): counted, logged, and slowed per client
+        self.failed_sign_ins = 0
+        self.sign_in_limit = RateLimit(config.failed_sign_ins_per_minute, config.failed_sign_in_burst)
         self.preview_limit = RateLimit(config.previews_per_minute, config.preview_burst)
         self.previews = PreviewWorker(config.problems_dirs, config.preview_seconds)
         self.queue = None
@@ -148,19 +155,32 @@ class Server:
             scheme, _, token = header.partition(" ")
             student = student_of(self.secret, token) if scheme.lower() == "bearer" else None
             if student is None:
+                self.failed_sign_in(request, "Authorization header")
                 raise HTTPException(401, "the token is not one this server issued; expected 'Authorization: "
                                          "Bearer <token>' with the token from your instructor",
                                     headers={"WWW-Authenticate": "Bearer"})
             return Who(self._allowed(student))
         cookie = request.cookies.get(SESSION_COOKIE)
         if cookie:
-            student = student_of(self.secret, cookie)
+            student = self.db.session_student(cookie, SESSION_SECONDS)
             if student is not None:
                 return Who(self._allowed(student), cookie)
         if self.config.open:
             return Who("guest")
         raise HTTPException(401, "no token; expected 'Authorization: Bearer <token>' (or sign in on the web page)",
                             headers={"WWW-Authenticate": "Bearer"})
+
+    def failed_sign_in(self, request: Request, how: str) -> None:
+        """A token this server did not sign (or signed for someone off the roster): counted and
+        logged with the client's address; beyond the per-client rate, 429 with Retry-After."""
+        self.failed_sign_ins += 1
+        client = request.client.host if request.client else "unknown"
+        log.warning("refused sign-in #%d from %s (%s)", self.failed_sign_ins, client, how)
+        wait = self.sign_in_limit.take(f"sign-in:{client}")
+        if wait:
+            seconds = max(1, math.ceil(wait))
+            raise HTTPException(429, f"too many refused tokens from this address; try again in {seconds} s",
+                                headers={"Retry-After": str(seconds)})
 
     def _allowed(self, student: str) -> str:
         if self.roster is not None and student not in self.roster and student != INSTRUCTOR \

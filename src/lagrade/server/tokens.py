@@ -74,3 +74,9 @@ def read_roster(path: Path) -> tuple[str, ...]:
     if not names:
         raise RosterError(f"{path}: no student ids in it; expected a CSV file with a 'student' column")
     return tuple(names)
+
+
+def login_csrf(secret: bytes, nonce: str) -> str:
+    """The sign-in form's token, tied to the nonce in the browser's sign-in cookie: a page of another
+    site cannot sign a browser in (as the attacker, to read what the student then types)."""
+    return hmac.new(secret, f"login:{nonce}".encode(), hashlib.sha256).hexdigest()[:32]

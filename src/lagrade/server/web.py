@@ -3,6 +3,7 @@ fetched from anywhere; math is presentation MathML, which browsers render native
 
 from __future__ import annotations
 
+import hmac
 import json
 import mimetypes
 import secrets
@@ -16,8 +17,8 @@ from fastapi.templating import Jinja2Templates
 
 from lagrade.server.answers import AnswerTextError, to_toml
 from lagrade.server.api import MAX_ID, submit
-from lagrade.server.state import SESSION_COOKIE, TEMPLATES, Who
-from lagrade.server.tokens import issue, student_of
+from lagrade.server.state import SESSION_COOKIE, SESSION_SECONDS, TEMPLATES, Who
+from lagrade.server.tokens import login_csrf, student_of
 
 router = APIRouter(include_in_schema=False)
 templates = Jinja2Templates(directory=str(TEMPLATES))
@@ -27,6 +28,8 @@ CSP = ("default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline
 #: the class page (the HTML report) links its own style.css and report.js: from this server only
 CLASS_CSP = CSP.replace("script-src 'unsafe-inline'", "script-src 'self' 'unsafe-inline'") \
     .replace("style-src 'unsafe-inline'", "style-src 'self' 'unsafe-inline'")
+#: the sign-in form's nonce (see tokens.login_csrf), for the sign-in pages only
+LOGIN_COOKIE = "lagrade_login"
 
 
 def _server(request: Request):
@@ -37,8 +40,9 @@ def _page(request: Request, name: str, context: dict, status: int = 200, cookie:
     response = templates.TemplateResponse(request, name, context, status_code=status)
     response.headers["Content-Security-Policy"] = CSP
     response.headers["X-Content-Type-Options"] = "nosniff"
+    response.headers["Referrer-Policy"] = "no-referrer"  # a sign-in link's token stays in this tab
     if cookie:
-        _set_session(response, cookie)
+        _set_session(request, response, cookie)
     return response
 
 
@@ -67,8 +71,16 @@ def one_line_invalid(exc) -> str:
         f"{where}: {e['msg'].lower()}"
 
 
-def _set_session(response: Response, token: str) -> None:
-    response.set_cookie(SESSION_COOKIE, token, httponly=True, samesite="strict", max_age=180 * 24 * 3600)
+def _secure(request: Request) -> bool:
+    """Cookies are `Secure` over HTTPS: the server says it is reached so (--https, --ssl-certfile), or
+    this request came over TLS (here, or through a proxy uvicorn trusts: X-Forwarded-Proto)."""
+    return _server(request).config.https or request.url.scheme == "https"
+
+
+def _set_session(request: Request, response: Response, sid: str) -> None:
+    """The session's cookie: a random id of a session in the database (sign-out ends it), never the token."""
+    response.set_cookie(SESSION_COOKIE, sid, httponly=True, samesite="strict", secure=_secure(request),
+                        max_age=SESSION_SECONDS, path="/")
 
 
 def _who(request: Request) -> tuple[Who | None, str | None]:
@@ -78,9 +90,10 @@ def _who(request: Request) -> tuple[Who | None, str | None]:
         who = server.identify(request)
     except HTTPException:
         return None, None
-    if who.session is None and server.config.open:  # a browser on an open server: a guest session of its own
-        token = issue(server.secret, f"guest-{secrets.token_hex(6)}")
-        return Who(student_of(server.secret, token), token), token
+    if who.session is None and server.config.open:  # a browser on an open server: a guest of its own
+        student = f"guest-{secrets.token_hex(8)}"
+        sid = server.db.open_session(student)
+        return Who(student, sid), sid
     if who.session is None:
         return None, None  # a Bearer header is for the API; the pages want a signed-in browser
     return who, None
@@ -91,47 +104,98 @@ def index(request: Request):
     server = _server(request)
     who, cookie = _who(request)
     if who is None:
-        return _page(request, "login.html", {"title": "Sign in", "error": None})
+        return _sign_in_page(request, {})
     items = [{"id": pid, "title": p.title, "parts": len(p.parts)} for pid, p in server.problems.items()]
     return _page(request, "index.html", {"title": server.assignment.title or server.assignment.name, "who": who,
                                          "problems": items, "csrf": server.csrf(who)}, cookie=cookie)
 
 
+def _sign_in_page(request: Request, context: dict, status: int = 200) -> HTMLResponse:
+    """The sign-in form (or a sign-in link's confirmation), with its login-CSRF token: the form's
+    value is an HMAC of a nonce in a cookie of this browser (SameSite=Strict, so another site's form
+    posts without it)."""
+    server = _server(request)
+    nonce = request.cookies.get(LOGIN_COOKIE) or ""
+    if not 16 <= len(nonce) <= 64:
+        nonce = secrets.token_urlsafe(18)
+    ctx = {"title": "Sign in", "who": None, "error": None, "confirm": None, "token": "",
+           "login_csrf": login_csrf(server.secret, nonce), **context}
+    response = _page(request, "login.html", ctx, status=status)
+    response.set_cookie(LOGIN_COOKIE, nonce, httponly=True, samesite="strict", secure=_secure(request),
+                        max_age=3600, path="/")
+    response.headers["Cache-Control"] = "no-store"
+    return response
+
+
+def _token_student(request: Request, token: str, how: str) -> str:
+    """The student of a token this server issued and lets in; else counted, logged and 401 (or 429)."""
+    server = _server(request)
+    student = student_of(server.secret, token)
+    if student is None:
+        server.failed_sign_in(request, how)
+        raise HTTPException(401, "this is not a token this server issued; paste the token from your instructor")
+    try:
+        return server._allowed(student)
+    except HTTPException:
+        server.failed_sign_in(request, f"{how}, {student!r} not let in")
+        raise
+
+
 @router.get("/login")
 def login_link(request: Request, token: str = ""):
-    """The sign-in link ``/login?token=...``: the token becomes this browser's session."""
-    return _login(request, token)
+    """The sign-in link ``/login?token=...``: a page that says whom it signs in, and a button (a
+    POST with the login-CSRF token). A link alone signs nobody in: another site could send the
+    browser to the attacker's own link and read what the student then types."""
+    if not token.strip():
+        return _sign_in_page(request, {})
+    try:
+        student = _token_student(request, token, "sign-in link")
+    except HTTPException as exc:
+        if exc.status_code == 429:
+            raise
+        return _sign_in_page(request, {"error": exc.detail}, status=401)
+    return _sign_in_page(request, {"confirm": student, "token": token.strip()})
 
 
 @router.post("/login")
 async def login_form(request: Request):
-    form = await request.form(max_files=0, max_fields=3)
-    return _login(request, str(form.get("token", "")))
-
-
-def _login(request: Request, token: str):
     server = _server(request)
-    student = student_of(server.secret, token)
+    form = await request.form(max_files=0, max_fields=4)
+    origin = request.headers.get("origin")
+    nonce = request.cookies.get(LOGIN_COOKIE, "")
+    sent = str(form.get("login_csrf", ""))
+    if (origin and origin != "null" and origin.split("://", 1)[-1] != request.headers.get("host", "")) or \
+            not nonce or not hmac.compare_digest(sent, login_csrf(server.secret, nonce)):
+        return _sign_in_page(request, {"error": "this sign-in form is not this server's own, or it expired; "
+                                                "sign in again here"}, status=403)
+    token = str(form.get("token", "")).strip()
     try:
-        if student is None:
-            raise HTTPException(401, "this is not a token this server issued; paste the token from your instructor")
-        server._allowed(student)
+        student = _token_student(request, token, "sign-in form")
     except HTTPException as exc:
-        return _page(request, "login.html", {"title": "Sign in", "error": exc.detail}, status=401)
+        if exc.status_code == 429:
+            raise
+        return _sign_in_page(request, {"error": exc.detail}, status=401)
+    old = request.cookies.get(SESSION_COOKIE)
+    if old:
+        server.db.end_session(old)  # one browser, one session: the one it had ends
     response = RedirectResponse("/", status_code=303)
-    _set_session(response, token.strip())
+    _set_session(request, response, server.db.open_session(student))
+    response.delete_cookie(LOGIN_COOKIE, path="/")
     return response
 
 
 @router.post("/logout")
 async def logout(request: Request):
+    """Sign-out ends the session in the database: its cookie, wherever a copy of it is, signs nobody in."""
     server = _server(request)
     who, _ = _who(request)
     form = await request.form(max_files=0, max_fields=3)
     if who is not None:
         server.require_csrf(who, str(form.get("csrf", "")))
+        if who.session:
+            server.db.end_session(who.session)
     response = RedirectResponse("/", status_code=303)
-    response.delete_cookie(SESSION_COOKIE)
+    response.delete_cookie(SESSION_COOKIE, path="/")
     return response
 
 

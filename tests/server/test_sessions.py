@@ -1,0 +1,183 @@
+"""Browser sessions (issue 36, item 7): the cookie is a session of the database, not the student's
+permanent token; sign-out ends it; it is `Secure` behind HTTPS and `HttpOnly`; a sign-in link or
+another site's form signs nobody in (login CSRF); an --open server gives each browser a guest of
+its own; refused tokens are counted, logged and slowed."""
+
+from __future__ import annotations
+
+import http.client
+import logging
+import re
+import socket
+import threading
+import time
+
+import pytest
+from fastapi.testclient import TestClient
+from serverkit import make_config, sign_in
+
+from lagrade.server.app import create_app
+from lagrade.server.state import SESSION_COOKIE
+from lagrade.server.tokens import csrf_token, issue, student_of
+
+ANSWER = {"answer": {"L": "m1*x_d^2/2"}}
+
+
+def _set_cookie(response, name: str) -> str:
+    """The Set-Cookie header of ``name`` in a response."""
+    found = [h for h in response.headers.get_list("set-cookie") if h.startswith(f"{name}=")]
+    assert found, response.headers
+    return found[0]
+
+
+def test_the_cookie_is_a_session_not_the_token(quiet_app):
+    app, client = quiet_app
+    token = issue(app.state.server.secret, "alice")
+    page = client.get("/login", params={"token": token})
+    form = re.search(r'name="login_csrf" value="([^"]+)"', page.text).group(1)
+    r = client.post("/login", data={"token": token, "login_csrf": form}, follow_redirects=False)
+    assert r.status_code == 303
+    cookie = _set_cookie(r, SESSION_COOKIE)
+    sid = client.cookies[SESSION_COOKIE]
+    assert token not in cookie and token.split(".")[2] not in cookie and len(sid) >= 40
+    assert "httponly" in cookie.lower() and "samesite=strict" in cookie.lower()
+    assert "secure" not in cookie.lower()  # plain HTTP on 127.0.0.1: a Secure cookie would never come back
+    assert "signed in as" in client.get("/").text
+    # the token itself is no cookie: a browser that sends it as one is not signed in
+    other = TestClient(app, cookies={SESSION_COOKIE: token})
+    assert "Paste the token" in other.get("/").text
+    assert other.get("/api/v1/problems").status_code == 401
+
+
+def test_sign_out_ends_the_session_for_every_copy_of_its_cookie(quiet_app):
+    app, client = quiet_app
+    csrf = sign_in(app, client, "alice")
+    sid = client.cookies[SESSION_COOKIE]
+    stolen = TestClient(app, cookies={SESSION_COOKIE: sid})
+    assert stolen.get("/api/v1/problems").status_code == 200
+    r = client.post("/logout", data={"csrf": csrf}, follow_redirects=False)
+    assert r.status_code == 303 and SESSION_COOKIE not in client.cookies
+    assert stolen.get("/api/v1/problems").status_code == 401
+    assert "Paste the token" in stolen.get("/").text
+    assert stolen.post("/p/12.22/check", data={"f:L": "m1", "csrf": csrf}).status_code == 401
+    # signing in again is a new session (and a new CSRF token)
+    again = sign_in(app, client, "alice")
+    assert client.cookies[SESSION_COOKIE] != sid and again != csrf
+
+
+def test_cookies_are_secure_over_https(tmp_path):
+    app = create_app(make_config(tmp_path), grade=False)
+    with TestClient(app, base_url="https://testserver") as client:  # TLS here (uvicorn --ssl-certfile)
+        page = client.get("/login", params={"token": issue(app.state.server.secret, "alice")})
+        assert "secure" in _set_cookie(page, "lagrade_login").lower()
+        sign_in(app, client, "alice")
+        assert client.get("/").text.count("signed in as") == 1
+    (tmp_path / "b").mkdir()
+    other = create_app(make_config(tmp_path / "b", https=True), grade=False)
+    with TestClient(other) as client:  # --https: a proxy in front that says nothing
+        assert "secure" in _set_cookie(client.get("/"), "lagrade_login").lower()
+
+
+def _serve(app, **kw):
+    import uvicorn
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning", **kw))
+    thread = threading.Thread(target=server.run, daemon=True)
+    thread.start()
+    for _ in range(200):
+        if server.started:
+            break
+        time.sleep(0.05)
+    return server, thread, port
+
+
+@pytest.mark.parametrize("trusted", [True, False])
+def test_a_trusted_proxy_says_https_by_x_forwarded_proto(tmp_path, trusted):
+    """uvicorn believes X-Forwarded-Proto from --forwarded-allow-ips only (127.0.0.1 by default)."""
+    app = create_app(make_config(tmp_path), grade=False)
+    server, thread, port = _serve(app, proxy_headers=True,
+                                  forwarded_allow_ips="127.0.0.1" if trusted else "192.0.2.1")
+    try:
+        conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+        conn.request("GET", "/", headers={"X-Forwarded-Proto": "https"})
+        r = conn.getresponse()
+        cookie = [v for k, v in r.getheaders() if k.lower() == "set-cookie" and v.startswith("lagrade_login=")][0]
+        r.read()
+        conn.close()
+        assert ("secure" in cookie.lower()) == trusted, cookie
+    finally:
+        server.should_exit = True
+        thread.join(timeout=10)
+        app.state.server.stop()
+
+
+def test_a_sign_in_link_or_another_sites_form_signs_nobody_in(quiet_app):
+    """Login CSRF: a page of another site that sends the browser to the attacker's sign-in link, or
+    posts the attacker's token to /login, would sign the student in as the attacker."""
+    app, client = quiet_app
+    mallory = issue(app.state.server.secret, "mallory")
+    page = client.get("/login", params={"token": mallory})
+    assert page.status_code == 200 and "data-confirm>mallory<" in page.text
+    assert SESSION_COOKIE not in client.cookies and "Paste the token" in client.get("/").text
+    assert page.headers["referrer-policy"] == "no-referrer" and page.headers["cache-control"] == "no-store"
+    form = re.search(r'name="login_csrf" value="([^"]+)"', page.text).group(1)
+    # another site's form: no login cookie (SameSite=Strict), or a value it made up, or its Origin
+    fresh = TestClient(app)
+    for browser, data, headers in ((fresh, {"token": mallory, "login_csrf": form}, {}),
+                                   (client, {"token": mallory}, {}),
+                                   (client, {"token": mallory, "login_csrf": "0" * 32}, {}),
+                                   (client, {"token": mallory, "login_csrf": form},
+                                    {"Origin": "https://evil.example"})):
+        r = browser.post("/login", data=data, headers=headers, follow_redirects=False)
+        assert r.status_code == 403 and "sign-in form is not this server" in r.text, (data, headers)
+        assert SESSION_COOKIE not in browser.cookies
+    # the page's own button
+    r = client.post("/login", data={"token": mallory, "login_csrf": form},
+                    headers={"Origin": "http://testserver"}, follow_redirects=False)
+    assert r.status_code == 303 and SESSION_COOKIE in client.cookies
+
+
+def test_an_open_server_gives_each_browser_its_own_guest(tmp_path):
+    app = create_app(make_config(tmp_path, open=True), grade=False)
+    with TestClient(app) as one, TestClient(app) as two:
+        names = []
+        for browser in (one, two):
+            page = browser.get("/").text
+            names.append(re.search(r"data-student>([^<]+)<", page).group(1))
+            sid = browser.cookies[SESSION_COOKIE]
+            r = browser.post("/api/v1/problems/12.22/check", json=ANSWER,
+                             headers={"X-CSRF-Token": csrf_token(app.state.server.secret, sid)})
+            assert r.status_code == 202
+        assert names[0] != names[1] and all(n.startswith("guest-") for n in names)
+        # a guest's cookie is a session of this server, not a token signed for "guest-..." that
+        # would sign that guest in anywhere, for ever
+        assert student_of(app.state.server.secret, one.cookies[SESSION_COOKIE]) is None
+        assert names[0] == re.search(r"data-student>([^<]+)<", one.get("/").text).group(1)  # it stays
+        mine = one.get("/api/v1/problems/12.22/submissions").json()
+        assert len(mine) == 1  # the other browser's attempt is not this one's
+        # a guest's cookie call needs its CSRF token too
+        assert one.post("/api/v1/problems/12.22/check", json=ANSWER).status_code == 403
+
+
+def test_refused_tokens_are_counted_logged_and_slowed(tmp_path, caplog):
+    app = create_app(make_config(tmp_path, failed_sign_ins_per_minute=1, failed_sign_in_burst=3), grade=False)
+    server = app.state.server
+    with TestClient(app) as client, caplog.at_level(logging.WARNING, logger="lagrade.server"):
+        assert client.get("/login", params={"token": "lg1.bad.bad"}).status_code == 401
+        assert client.get("/api/v1/problems", headers={"Authorization": "Bearer lg1.x.y"}).status_code == 401
+        page = client.get("/")
+        form = re.search(r'name="login_csrf" value="([^"]+)"', page.text).group(1)
+        assert client.post("/login", data={"token": "guess", "login_csrf": form}).status_code == 401
+        assert server.failed_sign_ins == 3
+        r = client.post("/login", data={"token": "guess2", "login_csrf": form})
+        assert r.status_code == 429 and "retry-after" in r.headers
+        assert server.failed_sign_ins == 4
+        # a right token still signs in from elsewhere; this address waits
+        assert client.get("/api/v1/problems", headers={"Authorization": "Bearer " + issue(server.secret, "a")}) \
+            .status_code == 200
+    lines = [r.getMessage() for r in caplog.records if r.name == "lagrade.server"]
+    assert len(lines) == 4 and all("refused sign-in" in line and "testclient" in line for line in lines), lines
+
