@@ -8,6 +8,7 @@ from __future__ import annotations
 import http.client
 import logging
 import re
+import shutil
 import socket
 import threading
 import time
@@ -181,3 +182,53 @@ def test_refused_tokens_are_counted_logged_and_slowed(tmp_path, caplog):
     lines = [r.getMessage() for r in caplog.records if r.name == "lagrade.server"]
     assert len(lines) == 4 and all("refused sign-in" in line and "testclient" in line for line in lines), lines
 
+
+def test_serve_over_tls_with_a_certificate(tmp_path):
+    """`lagrade serve --ssl-certfile/--ssl-keyfile` hands them to uvicorn: the pages over HTTPS,
+    the cookies `Secure`, a browser signed in through them."""
+    import ssl
+    import subprocess
+
+    import httpx
+
+    openssl = shutil.which("openssl")
+    if openssl is None:
+        pytest.skip("no openssl to make a test certificate (apt-get install -y openssl)")
+    cert, key = tmp_path / "cert.pem", tmp_path / "key.pem"
+    subprocess.run([openssl, "req", "-x509", "-newkey", "rsa:2048", "-nodes", "-days", "1", "-subj", "/CN=127.0.0.1",
+                    "-addext", "subjectAltName=IP:127.0.0.1", "-keyout", str(key), "-out", str(cert)],
+                   check=True, capture_output=True, timeout=60)
+    app = create_app(make_config(tmp_path), grade=False)
+    server, thread, port = _serve(app, ssl_certfile=str(cert), ssl_keyfile=str(key))
+    try:
+        trust = ssl.create_default_context(cafile=str(cert))
+        with httpx.Client(base_url=f"https://127.0.0.1:{port}", verify=trust, timeout=10) as browser:
+            page = browser.get("/login", params={"token": issue(app.state.server.secret, "alice")})
+            assert "secure" in _set_cookie(page, "lagrade_login").lower()
+            token = issue(app.state.server.secret, "alice")
+            form = re.search(r'name="login_csrf" value="([^"]+)"', page.text).group(1)
+            r = browser.post("/login", data={"token": token, "login_csrf": form}, follow_redirects=False)
+            assert r.status_code == 303 and "secure" in _set_cookie(r, SESSION_COOKIE).lower()
+            assert "signed in as" in browser.get("/").text
+    finally:
+        server.should_exit = True
+        thread.join(timeout=10)
+        app.state.server.stop()
+
+
+def test_plain_http_off_this_machine_is_warned_about(tmp_path):
+    from click.testing import CliRunner
+
+    from lagrade.cli import main
+    from lagrade.cli.serve import plain_http_warning
+
+    assert "plain HTTP on 0.0.0.0" in plain_http_warning("0.0.0.0", tls=False, https=False)
+    assert plain_http_warning("0.0.0.0", tls=True, https=False) is None
+    assert plain_http_warning("0.0.0.0", tls=False, https=True) is None  # a proxy in front does TLS
+    assert plain_http_warning("127.0.0.1", tls=False, https=False) is None
+    assert plain_http_warning("localhost", tls=False, https=False) is None
+    (tmp_path / "hw.toml").write_text("x", encoding="utf-8")
+    (tmp_path / "cert.pem").write_text("x", encoding="utf-8")
+    r = CliRunner().invoke(main, ["serve", "--assignment", str(tmp_path / "hw.toml"),
+                                  "--ssl-certfile", str(tmp_path / "cert.pem")])
+    assert r.exit_code == 2 and "--ssl-keyfile" in r.output

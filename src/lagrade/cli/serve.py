@@ -44,6 +44,14 @@ def _roster(path: Path | None) -> tuple[str, ...] | None:
 @click.option("--host", default="127.0.0.1", show_default=True)
 @click.option("--port", default=8000, show_default=True, type=click.IntRange(0, 65535))
 @click.option("--open", "open_", is_flag=True, help="No tokens: anyone who reaches the server may check (a lecture demo).")
+@click.option("--ssl-certfile", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="Serve HTTPS with this certificate (PEM; with --ssl-keyfile): cookies are Secure.")
+@click.option("--ssl-keyfile", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="The certificate's private key (PEM).")
+@click.option("--https", "https", is_flag=True,
+              help="Students reach the server over HTTPS through a reverse proxy in front: cookies are always Secure.")
+@click.option("--forwarded-allow-ips", default="127.0.0.1", show_default=True,
+              help="Proxies whose X-Forwarded-Proto/-For are believed (comma-separated IPs or networks).")
 @click.option("--workers", "-j", type=click.IntRange(min=1), default=2, show_default=True, help="Warm grader processes.")
 @click.option("--spare-graders", type=click.IntRange(min=0), default=4, show_default=True,
               help="Warm graders that take fresh checks while others run slow ones (longer than 2 s).")
@@ -54,7 +62,8 @@ def _roster(path: Path | None) -> tuple[str, ...] | None:
               help="LTI 1.3: a TOML file naming the LMS platforms students launch from (docs/server.md).")
 @problems_option
 def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str, port: int, open_: bool,
-          workers: int, spare_graders: int, scheduler: str | None, unsafe_trusted_files: bool, lti: Path | None,
+          ssl_certfile: Path | None, ssl_keyfile: Path | None, https: bool, forwarded_allow_ips: str, workers: int,
+          spare_graders: int, scheduler: str | None, unsafe_trusted_files: bool, lti: Path | None,
           problems_dir: tuple[Path, ...]) -> None:
     """Serve the assignment: students check answers on a web page or with `lagrade check --server`."""
     _need_server_extra()
@@ -68,11 +77,13 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     from lagrade.server.tokens import INSTRUCTOR, issue
 
     err = Console(stderr=True, highlight=False)
+    if (ssl_certfile is None) != (ssl_keyfile is None):
+        raise click.UsageError("--ssl-certfile and --ssl-keyfile go together (the certificate and its key)")
     _require_jail(unsafe_trusted_files, err)
     db = db or str(assignment_path.with_name(assignment_path.stem + "-serve.sqlite"))
     config = ServerConfig(assignment=assignment_path, db=db, roster=_roster(roster), open=open_,
                           problems_dirs=problems_dir, workers=workers, scheduler=scheduler,
-                          spare_graders=spare_graders, lti=lti)
+                          spare_graders=spare_graders, lti=lti, https=https or ssl_certfile is not None)
     try:
         app = create_app(config)
     except NotAServerDatabase as exc:
@@ -84,10 +95,33 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     token = issue(app.state.server.secret, INSTRUCTOR)
     address = "127.0.0.1" if host in ("0.0.0.0", "::") else host
     err.print(banner(db, len(config.roster or ()), open_), soft_wrap=True)
-    err.print(f"class page: http://{address}:{port}/login?token={token}", soft_wrap=True)
+    if warning := plain_http_warning(host, ssl_certfile is not None, https):
+        err.print(warning, soft_wrap=True)
+    scheme = "https" if ssl_certfile is not None else "http"
+    err.print(f"class page: {scheme}://{address}:{port}/login?token={token}", soft_wrap=True)
     if lti is not None:
         err.print(f"LTI 1.3: what the LMS needs is at {app.state.lti.url}/lti/config", soft_wrap=True)
-    uvicorn.run(app, host=host, port=port, log_level="warning", timeout_graceful_shutdown=10)
+    tls = {"ssl_certfile": str(ssl_certfile), "ssl_keyfile": str(ssl_keyfile)} if ssl_certfile else {}
+    uvicorn.run(app, host=host, port=port, log_level="warning", timeout_graceful_shutdown=10, proxy_headers=True,
+                forwarded_allow_ips=forwarded_allow_ips, **tls)
+
+
+def plain_http_warning(host: str, tls: bool, https: bool) -> str | None:
+    """A line for a server that students reach over the network in plain HTTP: tokens and session
+    cookies would cross it readable by anyone on the way (docs/server.md: TLS, or a proxy in front)."""
+    import ipaddress
+
+    if tls or https:
+        return None
+    try:
+        loopback = ipaddress.ip_address(host).is_loopback
+    except ValueError:
+        loopback = host == "localhost"
+    if loopback:
+        return None
+    return (f"lagrade serve: warning: plain HTTP on {host}: tokens and session cookies cross the network "
+            "unencrypted; serve HTTPS (--ssl-certfile/--ssl-keyfile) or bind 127.0.0.1 behind a TLS reverse "
+            "proxy (--https); see docs/server.md")
 
 
 def banner(db: str, students: int, open_: bool) -> str:
