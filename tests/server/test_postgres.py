@@ -60,3 +60,30 @@ def test_graded_into_the_gradebook(tmp_path, pg_url):
 
         sign_in(app, page, INSTRUCTOR)
         assert "alice" in page.get("/class/").text
+
+
+def test_a_session_opens_and_sign_out_revokes_it(tmp_path, pg_url):
+    """The server_sessions table on PostgreSQL: a browser signs in (a session, not the token, in its
+    cookie), reads its page, signs out; the row is gone and a copy of the cookie signs nobody in."""
+    import re
+
+    from lagrade.server.state import SESSION_COOKIE, SESSION_SECONDS
+    from lagrade.server.tokens import student_of
+
+    app = create_app(make_config(tmp_path, db=pg_url), grade=False)
+    db = app.state.server.db
+    with TestClient(app) as client:
+        csrf = sign_in(app, client, "alice")
+        sid = client.cookies[SESSION_COOKIE]
+        assert student_of(app.state.server.secret, sid) is None  # not a token
+        assert db.session_student(sid, SESSION_SECONDS) == "alice"
+        assert db.session_student(sid, 0) is None  # older than its age bound: no one
+        page = client.get("/")
+        assert page.status_code == 200 and "data-student>alice<" in page.text
+        assert re.search(r'name="csrf" value="([^"]+)"', page.text).group(1) == csrf
+        assert client.post("/logout", data={"csrf": csrf}, follow_redirects=False).status_code == 303
+        assert db.session_student(sid, SESSION_SECONDS) is None
+    with TestClient(app, cookies={SESSION_COOKIE: sid}) as copy:
+        assert "data-student>" not in copy.get("/").text  # the sign-in form
+        assert copy.get("/api/v1/problems/12.22").status_code == 401
+    db.close()
