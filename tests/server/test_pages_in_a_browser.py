@@ -97,6 +97,14 @@ def test_a_phone_keeps_its_width_after_a_verdict(graded, live_url, chromium):
         })""")
         assert all(fits), fits
         assert _width(page) == PHONE["width"]
+        # the statement is math (MathML, as the preview's) and its figure is drawn, inside the phone
+        assert page.locator("[data-statement] math").count() > 0
+        figure = page.locator("[data-figure] img")
+        figure.scroll_into_view_if_needed()
+        page.wait_for_function("() => { const i = document.querySelector('[data-figure] img'); "
+                               "return i && i.complete && i.naturalWidth > 0; }", timeout=15000)
+        box = figure.bounding_box()
+        assert box and box["x"] >= 0 and box["x"] + box["width"] <= PHONE["width"] + 0.5, box
     finally:
         page.close()
 
@@ -116,6 +124,18 @@ def test_the_read_as_cell_is_not_clipped_on_a_desktop(graded, live_url, chromium
         page.close()
 
 
+#: Content-Security-Policy refusals seen by any page of the axe walk (securitypolicyviolation events)
+_REFUSED: list[str] = []
+_LISTEN = ("document.addEventListener('securitypolicyviolation', e => "
+           "console.error('CSP refused ' + e.violatedDirective + ' ' + e.blockedURI));")
+
+
+def _listen(context) -> None:
+    context.add_init_script(_LISTEN)
+    context.on("console", lambda m: _REFUSED.append(m.text) if "CSP refused" in m.text
+               or "Content Security Policy" in m.text else None)
+
+
 def _axe(page, name: str) -> list[str]:
     results = Axe().run(page)
     bad = [f"{name}: {v['id']} ({v['impact']}) x{len(v['nodes'])}: {v['help']}: "
@@ -132,6 +152,7 @@ def test_axe_finds_no_serious_violation_on_any_page(graded, live_url, chromium):
     found: list[str] = []
     for viewport in (DESKTOP, PHONE):
         context = chromium.new_context(viewport=viewport)
+        _listen(context)
         page = context.new_page()
         try:
             tag = f"{viewport['width']}px"
@@ -147,9 +168,16 @@ def test_axe_finds_no_serious_violation_on_any_page(graded, live_url, chromium):
             found += _axe(page, f"{tag} verdict")
             page.goto(f"{live_url}/p/12.22?attempt=999999")
             found += _axe(page, f"{tag} error")
+            page.goto(f"{live_url}/p/99.99")
+            found += _axe(page, f"{tag} no such problem")
+            page.goto(f"{live_url}/p/12.14")
+            page.goto(live_url + page.locator("a[href*='?attempt=']").first.get_attribute("href"))
+            page.locator("#result").wait_for(timeout=15000)
+            found += _axe(page, f"{tag} an earlier attempt")
         finally:
             context.close()
         context = chromium.new_context(viewport=viewport)
+        _listen(context)
         page = context.new_page()
         try:
             sign_in(page, live_url, issue(secret, INSTRUCTOR))
@@ -163,6 +191,7 @@ def test_axe_finds_no_serious_violation_on_any_page(graded, live_url, chromium):
         finally:
             context.close()
     assert not found, "\n".join(found)
+    assert not _REFUSED, _REFUSED  # no page had a style, script or picture refused by its own policy
 
 
 def test_the_class_page_loads_its_own_style_and_script(graded, live_url, chromium):
