@@ -30,3 +30,21 @@ def test_a_spelling_not_read_names_the_accepted_ones(p1214, typed):
     said = read(p1214, typed)
     assert "theta1' (also theta1_d, theta1_dot or theta1dot)" in said, said
     assert "unterminated string" not in said and "theta2dot" not in said and "p_theta1" not in said
+
+
+def test_the_help_before_typing_names_spellings_that_are_read(p1214):
+    """The page's and the API's typing help (describe.typing_help): every spelling it names is read,
+    as the same rate; its power and equation forms too."""
+    import re
+
+    from lagrade.describe import typing_help
+
+    said = typing_help(p1214)
+    assert "theta1' (also theta1_d, theta1_dot or theta1dot)" in said and "theta2'" in said
+    for rate in re.findall(r"\btheta1(?:_d|_dot|dot|')(?![\w'])", said):
+        assert read(p1214, f"m1*{rate}^2") == read(p1214, "m1*theta1_d**2"), rate
+    for rate in re.findall(r"\btheta1(?:_dd|_ddot|ddot|'')(?!\w)", said):
+        assert read(p1214, f"m1*{rate}") == read(p1214, "m1*theta1_dd"), rate
+    assert "x^2 or x**2" in said and read(p1214, "m1^2") == read(p1214, "m1**2")
+    assert "Eq(lhs, rhs) or lhs == rhs" in said
+    assert read(p1214, "Eq(m1, m2)") == read(p1214, "m1 == m2")

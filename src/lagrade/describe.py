@@ -92,3 +92,17 @@ def template_text(p: Problem) -> str:
             lines.append(f"# {part.name} = ")
         lines.append("")
     return "\n".join(lines).rstrip() + "\n"
+
+
+def typing_help(p: Problem) -> str:
+    """How a typed answer (the course page, answer.toml) writes a coordinate's rates, for this
+    problem's coordinates: said before a student types, not only in the error after."""
+    from lagrade.notation import spellings
+
+    coords = list(dict.fromkeys(c.name for s in p.systems for c in s.coordinates))
+    if not coords:
+        return ""
+    first = coords[0]
+    others = f"; likewise {', '.join(c + chr(39) for c in coords[1:])}" if len(coords) > 1 else ""
+    return (f"Typing an answer: the rates of {first} are written {spellings(first)}{others}; a power is x^2 or x**2; "
+            "an equation is Eq(lhs, rhs) or lhs == rhs.")

@@ -44,3 +44,13 @@ def test_every_problem_has_a_figure_drawn_from_its_scene():
     for pid in ("12.14", "12.8"):
         assert png_chunks(draw(load_problem(pid)))[0] == "IHDR"
     assert load_problem("12.14").systems[0].figure is not None
+
+
+def test_the_page_and_the_api_say_how_to_type_a_rate(quiet_app):
+    app, client = quiet_app
+    sign_in(app, client, "alice")
+    page = client.get("/p/12.14").text
+    help_ = re.search(r'<p class="hint" id="typing" data-typing>([^<]*)</p>', page).group(1)
+    assert "theta1&#39; (also theta1_d" in help_
+    api = client.get("/api/v1/problems/12.14", headers=bearer(app, "bob")).json()["typing"]
+    assert "theta1' (also theta1_d, theta1_dot or theta1dot)" in api

@@ -63,11 +63,12 @@ def problem(pid: str, request: Request) -> dict:
     server = _server(request)
     who = server.identify(request)
     p = server.problem(pid)
+    from lagrade.describe import typing_help
     from lagrade.server.rules import standing
 
     return {"id": pid, "title": p.title, "show": server.text("show", pid), "template": server.text("template", pid),
             "statement_html": server.statement(pid), "figure": f"/api/v1/problems/{pid}/figure.png",
-            "fields": server.fields(pid), "rules": standing(server, who.student, pid, who.instructor)}
+            "fields": server.fields(pid), "typing": typing_help(p), "rules": standing(server, who.student, pid, who.instructor)}
 
 
 @router.get("/problems/{pid}/figure.png", response_class=Response,

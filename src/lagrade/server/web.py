@@ -200,12 +200,13 @@ async def logout(request: Request):
 
 
 def _problem_context(request: Request, who: Who, pid: str) -> dict:
+    from lagrade.describe import typing_help
     from lagrade.server.rules import rows, standing
 
     server = _server(request)
     p = server.problem(pid)
     return {"title": f"Problem {pid}", "who": who, "pid": pid, "problem": p, "show": server.text("show", pid),
-            "statement": server.statement(pid),
+            "statement": server.statement(pid), "typing": typing_help(p),
             "rules": standing(server, who.student, pid, who.instructor),
             "template": server.text("template", pid), "fields": server.fields(pid), "csrf": server.csrf(who),
             "attempts": rows(server, server.db.attempts(who.student, pid, limit=20), who), "result": None, "error": None,
