@@ -199,3 +199,29 @@ def test_check_server_honours_the_feedback_level(verdict_only, tmp_path):
     finally:
         server.should_exit = True
         thread.join(timeout=10)
+
+
+def test_check_server_text_says_the_evidence_in_words(graded, live_url, tmp_path):
+    """`lagrade check --server` prints a student's words (no integrator, tolerance, count or time);
+    the same attempt read with the instructor's token keeps the settings."""
+    from click.testing import CliRunner
+
+    from lagrade.cli import main
+
+    app = graded[0]
+    answer = tmp_path / "answer.toml"
+    answer.write_text(f'L = "{RIGHT_L}"\n', encoding="utf-8")
+    token = bearer(app, "iris")["Authorization"].split()[1]
+    out = CliRunner().invoke(main, ["check", "12.14", str(answer), "--server", live_url, "--token", token],
+                             env={"COLUMNS": "400"})
+    text = " ".join(out.output.split())
+    assert "your Lagrangian gives the same motion as the true one over t in [0, 2]" in text, out.output
+    assert not re.search(r"DOP853|rtol|evaluations", out.output), out.output
+    sid = CliRunner().invoke(main, ["check", "12.14", str(answer), "--server", live_url, "--token", token, "--json"])
+    import json
+
+    got = json.loads(sid.output)
+    from fastapi.testclient import TestClient
+
+    mine = TestClient(app).get(f"/api/v1/submissions/{got['submission_id']}", headers=bearer(app, INSTRUCTOR)).json()
+    assert "evaluations" in next(p for p in mine["parts"] if p["part"] == "L")["feedback"]
