@@ -373,3 +373,65 @@ def test_an_lti_file_that_cannot_be_used_is_said_in_one_line(tmp_path):
 def test_no_lti_routes_without_lti(quiet_app):
     _app, client = quiet_app
     assert client.get("/lti/jwks").status_code == 404
+
+
+@pytest.mark.slow
+def test_a_launch_in_chromium_lands_on_a_page_with_math_a_figure_and_no_axe_violation(lms):
+    """Debian's Chromium through the LMS's own pages: the launch signs in with an HttpOnly session
+    cookie (no token), the problem page shows the statement's MathML and the drawn figure, and
+    axe-core finds no serious or critical violation on the launch's page, the problem page or the
+    configuration page an instructor reads."""
+    import os
+    import shutil
+
+    chromium = shutil.which("chromium") or "/usr/bin/chromium"
+    if not os.path.exists(chromium):
+        pytest.skip("no chromium")
+    sync_api = pytest.importorskip("playwright.sync_api")
+    from axe_playwright_python.sync_playwright import Axe
+
+    platform, tool_url, app = lms
+    platform.user("u-chrome", "Chrome Student")
+    platform.link("link-chrome", "12.22")
+    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+             "--disable-component-update", "--disable-sync"]
+    bad: list[str] = []
+
+    def axe(page, name):
+        bad.extend(f"{name}: {v['id']} ({v['impact']})" for v in Axe().run(page).response["violations"]
+                   if v["impact"] in ("serious", "critical"))
+
+    with sync_api.sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=chromium, args=flags)
+        try:
+            context = browser.new_context(viewport={"width": 390, "height": 844})
+            page = context.new_page()
+            landed = []
+            page.on("response", lambda r: landed.append(r) if r.url == f"{tool_url}/lti/launch" else None)
+            page.goto(platform.start_url("u-chrome", "link-chrome"))
+            page.wait_for_url(f"{tool_url}/p/12.22", timeout=60000)
+            assert landed and landed[0].status == 200
+            student = student_id(platform.url, platform.deployment_id, "u-chrome")
+            assert page.locator("[data-student]").inner_text() == student
+            cookie = next(c for c in context.cookies() if c["name"] == SESSION_COOKIE)
+            assert cookie["httpOnly"] and cookie["sameSite"] == "Strict"
+            assert student_of(app.state.server.secret, cookie["value"]) is None
+            assert page.locator("[data-statement] math").count() > 0
+            page.wait_for_function("() => { const i = document.querySelector('[data-figure] img'); "
+                                   "return i && i.complete && i.naturalWidth > 0; }", timeout=15000)
+            axe(page, "problem after a launch")
+            page.goto(f"{tool_url}/lti/config")
+            axe(page, "LTI configuration page")
+            context.close()
+            # the launch's own page ("Signed in ... Continue"), as another launch returns it, without
+            # its 0 s refresh (which would leave it before axe reads it)
+            with httpx.Client(timeout=60) as other:
+                r = _post(other, _launch(platform, other, "u-chrome", "link-chrome"))
+            assert r.status_code == 200 and "data-next" in r.text
+            page = browser.new_page()
+            page.set_content(re.sub(r"<meta http-equiv=\"refresh\"[^>]*>", "", r.text))
+            axe(page, "launch page")
+            page.close()
+        finally:
+            browser.close()
+    assert not bad, bad
