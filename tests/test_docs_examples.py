@@ -242,3 +242,18 @@ def test_the_reader_sees_a_not_run_marker_and_an_indented_block():
     m = BLOCK.search(text)
     assert m.group("why").strip() == "needs a real registry account" and m.group("body").strip() == "docker login"
     assert any(b.not_run and "Docker Hub" in b.not_run for b in ALL)
+
+
+@pytest.mark.parametrize("block", [b for b in of("json") if '"problem": "12.22"' in b.body], ids=str)
+def test_quoted_json_main_lines_are_what_check_prints(block):
+    """The quoted output's fixed lines against 12.22's reference graded now: the top-level keys in order,
+    and the first part's name, verdict, evidence and the feedback's opening words (the rest is elided)."""
+    import lagrade
+
+    got = json.loads(lagrade.check("12.22", ROOT / "reference_solutions" / "12.22" / "answer.py").model_dump_json())
+    assert list(got) == list(dict.fromkeys(re.findall(r'"(problem|score|max_score|parts|problems)":', block.body)))
+    first = got["parts"][0]
+    for key in ("part", "verdict", "method"):
+        assert f'"{key}": "{first[key]}"' in block.body, (key, first[key])
+    quoted = re.search(r'"feedback": "(.*?) \.\.\."', block.body).group(1)
+    assert first["feedback"].startswith(quoted), (quoted, first["feedback"])
