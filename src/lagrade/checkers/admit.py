@@ -292,6 +292,10 @@ def _constructs(expr: sp.Expr, part: Part, mech) -> list[str]:
                     continue
             stack.extend(e.args)
         elif name in ANALYTIC_FUNCTIONS:
+            folded = _folded(e)
+            if folded:
+                notes.append(folded)
+                continue
             stack.extend(e.args)
         elif isinstance(e, AppliedUndef) and e.func.__name__ in functions:
             stack.extend(e.args)
@@ -321,17 +325,50 @@ def _construct_words(e: sp.Basic) -> str:
 
 def _hidden_switch(e: sp.Pow, positive: set[str]) -> str | None:
     """sqrt(u**2) is |u| on the real domain: a root of a square is a switch written as a power
-    (parameters declared positive are taken so: sqrt(g**2) is g)."""
+    (parameters declared positive are taken so: sqrt(g**2) is g). The base is factored first, so a
+    square multiplied out (sqrt(m1**2 - 100*m1 + 2500), |m1 - 50|) is seen too."""
+    from lagrade.compare.symbolic import _OutOfTime, time_bound
+
     real = {s: sp.Symbol(s.name, positive=True) if s.name in positive else sp.Symbol(s.name, real=True)
             for s in e.free_symbols if isinstance(s, sp.Symbol)}
     if not real or sp.count_ops(e) > 200:
         return None
     try:
         refined = e.xreplace(real)
+        if not refined.has(sp.Abs, sp.sign, sp.Piecewise) and isinstance(refined, sp.Pow) \
+                and refined.base.free_symbols and refined.base.is_Add:
+            with time_bound(1.0):
+                refined = sp.Pow(sp.factor(refined.base), refined.exp)
+    except _OutOfTime:
+        return None
     except Exception:  # noqa: BLE001  (nothing hidden that sympy can see)
         return None
     if refined.has(sp.Abs, sp.sign, sp.Piecewise):
         return "it takes a root of a square, which is an absolute value (a switch) in disguise"
+    return None
+
+
+#: an inverse function of the periodic function it undoes only on one period: acos(cos(u)) is |u| near
+#: 0 and a sawtooth beyond; asin(cos(u)) is pi/2 - |u|
+_FOLDS = {"asin": ("sin", "cos"), "acos": ("cos", "sin"), "atan": ("tan", "cot"), "acot": ("cot", "tan"),
+          "asec": ("sec", "csc"), "acsc": ("csc", "sec")}
+
+
+def _folded(e: sp.Basic) -> str | None:
+    """An inverse trigonometric function of exactly a trigonometric function of a variable, or an
+    ``atan2`` whose first argument is 0 (the sign of the second, times pi): switches written with
+    analytic names, right on the sampled range and wrong beyond it."""
+    name = type(e).__name__
+    if name == "atan2":
+        y, x = e.args
+        if y.is_zero and x.free_symbols:
+            return "it takes atan2(0, u), which is 0 or pi by the sign of u (a switch)"
+        if isinstance(y, (sp.sin, sp.cos)) and isinstance(x, (sp.sin, sp.cos)) and y.args[0].free_symbols:
+            return f"it takes {sp.sstr(e)}, an angle folded into one period (a switch)"
+        return None
+    arg = e.args[0] if e.args else None
+    if name in _FOLDS and arg is not None and type(arg).__name__ in _FOLDS[name] and arg.args[0].free_symbols:
+        return f"it takes {name}({type(arg).__name__}(...)), an angle folded into one period (a switch)"
     return None
 
 
