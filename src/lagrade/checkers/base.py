@@ -270,6 +270,22 @@ def equation_rows(value: object, part: Part) -> list[sp.Expr]:
     return rows
 
 
+def keyed(value: dict, part: Part) -> dict[str, object]:
+    """A dict answer by entry name; two keys naming one entry (``"m1"`` and the symbol ``m1``) are two
+    answers for it, of which the grader would silently take one: `InvalidAnswer`."""
+    given: dict[str, object] = {}
+    for k, v in value.items():
+        name = key_name(k)
+        if name in given:
+            raise InvalidAnswer(f"{part.name} gives '{name}' twice (as {given_keys(value, name)}); give each entry once")
+        given[name] = v
+    return given
+
+
+def given_keys(value: dict, name: str) -> str:
+    return " and ".join(repr(k) if isinstance(k, str) else sp.sstr(k) for k in value if key_name(k) == name)
+
+
 def key_name(key: object) -> str:
     """Dict keys may be names, symbols or coordinates ``theta(t)``: all mean the name."""
     if isinstance(key, str):

@@ -11,7 +11,7 @@ from lagrade.checkers.base import (
     InvalidAnswer,
     as_expr,
     graded,
-    key_name,
+    keyed,
     read_sympy,
     surplus,
 )
@@ -101,7 +101,7 @@ def check_trajectory(ctx: Context, part: Part, value: object) -> PartResult:
     mech = ctx.mech(part)
     if not isinstance(value, dict):
         raise InvalidAnswer(f"{part.name} should be a dict coordinate -> expression in t")
-    given = {key_name(k): v for k, v in value.items()}
+    given = keyed(value, part)
     missing = [n for n in mech.names if n not in given]
     if missing:
         raise InvalidAnswer(f"{part.name} is missing {', '.join(missing)}")

@@ -21,7 +21,7 @@ from lagrade.checkers.base import (
     InvalidAnswer,
     as_expr,
     graded,
-    key_name,
+    keyed,
     read_sympy,
 )
 from lagrade.compare.trajectory import integrate
@@ -91,7 +91,7 @@ def read_table(part: Part, mech: Mechanics, value: object) -> tuple[np.ndarray, 
         times = [_number(k, "a time", part) for k in value]
         vals = [_number(v, f"the value at t = {k}", part) for k, v in value.items()]
         return np.array(times), np.array([vals])
-    given = {key_name(k): v for k, v in value.items()}
+    given = keyed(value, part)
     unknown = sorted(set(given) - {*names, "t"})
     if unknown:
         raise InvalidAnswer(f"{part.name} has unknown keys {unknown}; " + shape)

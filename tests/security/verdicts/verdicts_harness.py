@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-FAMILIES = {"qdd", "complex", "switch", "roots", "floats", "hints", "honest"}
+FAMILIES = {"qdd", "complex", "switch", "roots", "floats", "hints", "honest", "tiny", "keys"}
 EXPECTS = {"no-credit", "full-marks"}
 GRADING_SECONDS = 60.0
 HEADER = re.compile(r"# target: (?P<target>\S+)\n# family: (?P<family>\S+)\n# expect: (?P<expect>\S+)\n"

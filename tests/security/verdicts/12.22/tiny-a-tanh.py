@@ -1,0 +1,12 @@
+# target: a
+# family: tiny
+# expect: no-credit
+# why: each acceleration times tanh(1000*m1): 1 to 1e-400 in the box, wrong for small m1
+from sympy import *
+t = symbols("t")
+m1, m2, m3, m4, g, l1, l2, l3, m = symbols("m1 m2 m3 m4 g l1 l2 l3 m", positive=True)
+x, y, z = Function("x")(t), Function("y")(t), Function("z")(t)
+xd, yd, zd = x.diff(t), y.diff(t), z.diff(t)
+S = 4*g/(1/m1 + 1/m2 + 1/m3 + 1/m4)
+right_a = {"m1": g - S/m1, "m2": g - S/m2, "m3": g - S/m3, "m4": g - S/m4}
+a = {k: v*tanh(1000*m1) for k, v in right_a.items()}
