@@ -327,20 +327,18 @@ def _hidden_switch(e: sp.Pow, positive: set[str]) -> str | None:
     """sqrt(u**2) is |u| on the real domain: a root of a square is a switch written as a power
     (parameters declared positive are taken so: sqrt(g**2) is g). The base is factored first, so a
     square multiplied out (sqrt(m1**2 - 100*m1 + 2500), |m1 - 50|) is seen too."""
-    from lagrade.compare.symbolic import _OutOfTime, time_bound
-
     real = {s: sp.Symbol(s.name, positive=True) if s.name in positive else sp.Symbol(s.name, real=True)
             for s in e.free_symbols if isinstance(s, sp.Symbol)}
     if not real or sp.count_ops(e) > 200:
         return None
     try:
         refined = e.xreplace(real)
-        if not refined.has(sp.Abs, sp.sign, sp.Piecewise) and isinstance(refined, sp.Pow) \
-                and refined.base.free_symbols and refined.base.is_Add:
-            with time_bound(1.0):
-                refined = sp.Pow(sp.factor(refined.base), refined.exp)
-    except _OutOfTime:
-        return None
+        base = refined.base if isinstance(refined, sp.Pow) else None
+        # factoring is fast for small polynomials; no alarm here (an inner alarm would upset a caller's)
+        if not refined.has(sp.Abs, sp.sign, sp.Piecewise) and base is not None and base.is_Add \
+                and base.free_symbols and len(base.free_symbols) <= 4 and base.is_polynomial() \
+                and sp.Poly(base).total_degree() <= 8:
+            refined = sp.Pow(sp.factor(base), refined.exp)
     except Exception:  # noqa: BLE001  (nothing hidden that sympy can see)
         return None
     if refined.has(sp.Abs, sp.sign, sp.Piecewise):
