@@ -5,7 +5,7 @@
 1. For 12.14 and 12.43 at the default preset's tolerance (1e-10): error, median time and evaluations of
    the grading path (the compiled DOP853 grading runs), of the same integrator on rates as numpy code,
    and of scipy's methods one trajectory at a time, as ratios to the grading path
-   (`lagrade.research.workprecision`; reference Radau at 1e-13).
+   (`lagrade.uses.research.workprecision`; reference Radau at 1e-13).
 2. For the spring pendulum 12.7 with k/m from 1e1 to 1e6: evaluations and time of DOP853, LSODA and
    Radau over the horizon (what the stiffness rule is based on), and what the grader does ("auto").
 The full sweep with table, Markdown, CSV and PNG is ``lagrade bench accuracy``.
@@ -19,10 +19,10 @@ from dataclasses import replace
 import numpy as np
 
 from lagrade.compare.trajectory import ACCURACY, estimate_stiffness, integrate
-from lagrade.library import load_problem
-from lagrade.reference import Mechanics
-from lagrade.research import workprecision as wp
-from lagrade.scene_model import scene_model
+from lagrade.problem.library import load_problem
+from lagrade.derive.reference import Mechanics
+from lagrade.uses.research import workprecision as wp
+from lagrade.compare.scene_model import scene_model
 
 
 def methods_at_default(md: bool = False):

@@ -71,7 +71,7 @@ def make_distinct(root: Path, problem: str) -> int:
     the number of files changed."""
     import re
 
-    from lagrade.library import load_problem
+    from lagrade.problem.library import load_problem
 
     spec = load_problem(problem)
     system = spec.systems[0]
@@ -167,8 +167,8 @@ def run_grade(lagrade: list[str], root: Path, hw: Path, db: Path, workers: int,
 OWN = """
 import os, sys, time
 from pathlib import Path
-from lagrade.bulk.worker import Grader
-from lagrade.library import problem_path
+from lagrade.uses.bulk.worker import Grader
+from lagrade.problem.library import problem_path
 grader = Grader({sys.argv[1]: Path(problem_path(sys.argv[1])).read_text()})
 for name in sys.argv[2:]:
     source = Path(name).read_bytes()
@@ -196,7 +196,7 @@ def own_code_seconds(problem: str, copies: dict[str, list], repeats: int = 3) ->
     environment: sympy's cache is as large, so the answers' code is as fast); the median
     of ``repeats``, times the number of copies (``copies``: content hash -> [file, count]). No grader
     can take less: it is the part of a class's time that grading cannot remove."""
-    from lagrade.bulk.worker import grader_environment
+    from lagrade.uses.bulk.worker import grader_environment
 
     counts = {key: fk for key, fk in copies.items() if fk[0].suffix == ".py"}
     distinct = [str(f) for f, _ in counts.values()] * repeats
@@ -298,8 +298,8 @@ def main() -> None:
         if args.dask:
             from distributed import Client, LocalCluster
 
-            from lagrade.bulk.assignment import load_assignment
-            from lagrade.bulk.runner import grade_folder
+            from lagrade.uses.bulk.assignment import load_assignment
+            from lagrade.uses.bulk.runner import grade_folder
 
             with LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
                               dashboard_address=None) as cluster, Client(cluster) as client:

@@ -1,6 +1,6 @@
 """The two expression compilers issue 24 weighs, side by side on the grader's own right-hand sides.
 
-1. **symengine** (what lagrade uses, `lagrade.numeric.compile_machine`): symengine's LLVM
+1. **symengine** (what lagrade uses, `lagrade.numbers.numeric.compile_machine`): symengine's LLVM
    ``Lambdify`` with cse, after lagrade's NaN rewrites, reloaded from its object code; called as the
    integrator calls it (`Compiled.blocks` on the state, t and parameter rows).
 2. **llvmlite + ctypes**: a small emitter of straight-line LLVM IR (one loop over the K columns, a
@@ -32,10 +32,10 @@ import time
 import numpy as np
 import sympy as sp
 
-from lagrade.grade import references
-from lagrade.library import load_problem
-from lagrade.numeric import call_blocks, compile_machine, compile_numpy
-from lagrade.sampling import rng_for, sample_points, state_arrays
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem
+from lagrade.numbers.numeric import call_blocks, compile_machine, compile_numpy
+from lagrade.compare.sampling import rng_for, sample_points, state_arrays
 
 SCENES = (("12.14", ""), ("12.37", ""))
 _LIBM = {"sin": "sin", "cos": "cos", "tan": "tan", "exp": "exp", "log": "log", "atan": "atan",

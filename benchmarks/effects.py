@@ -5,7 +5,7 @@ side in one run (the repeats alternated).
 
     python benchmarks/effects.py [IDS...]
 
-See lagrade.research.effectsbench. The scenes: chapter problems with different effects, and the dry
+See lagrade.uses.research.effectsbench. The scenes: chapter problems with different effects, and the dry
 friction (stick-slip) test scene, the one that declares switching.
 """
 
@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import sys
 
-from lagrade.research.effectsbench import COULOMB, compare_scene, format_rows
+from lagrade.uses.research.effectsbench import COULOMB, compare_scene, format_rows
 
 REPEAT = 9
 IDS = ("12.43", "12.14", "12.7", "12.16", "12.22", "12.34", "12.35", "12.4", "12.23", "12.49", COULOMB)

@@ -17,7 +17,7 @@ are written as an answer three ways and graded under fast, default and strict:
   rule lets through), the first parameter (in the problem's order) whose 10 % change is rejected;
 - **gross error**: the same parameter off by 10 %.
 
-Each graded part's deciding evidence is read from the verdict (`lagrade.research.sensitivity.evidence`):
+Each graded part's deciding evidence is read from the verdict (`lagrade.uses.research.sensitivity.evidence`):
 the sampled states (the box), the states along the motion, the trajectory comparison, the numbers rule,
 or "not rejected".
 """
@@ -33,10 +33,10 @@ from pathlib import Path
 import sympy as sp
 
 import lagrade
-from lagrade.effects import machinery
-from lagrade.grade import references
-from lagrade.library import load_problem, problem_ids
-from lagrade.research.sensitivity import _write, evidence, reference_rows
+from lagrade.derive.effects import machinery
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem, problem_ids
+from lagrade.uses.research.sensitivity import _write, evidence, reference_rows
 
 PRESETS = ("fast", "default", "strict")
 CLASSES = ("beyond the box", "small parameter error", "gross error")

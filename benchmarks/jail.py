@@ -16,9 +16,9 @@ import sys
 import time
 from pathlib import Path
 
-from lagrade.jail import kernel, zygote
-from lagrade.jail.sandbox import run_answer_file
-from lagrade.library import reference_dir
+from lagrade.answer.jail import kernel, zygote
+from lagrade.answer.jail.sandbox import run_answer_file
+from lagrade.problem.library import reference_dir
 
 TRIVIAL = "from lagrade.answer import *\ntheta = coordinates('theta')\nL = dot(theta)**2/2 + cos(theta)\n"
 

@@ -52,13 +52,13 @@ sys.path.insert(0, str(REPO / "tests"))
 
 import sympy as sp
 
-from lagrade.reading import latex, latex_subset
+from lagrade.answer.reading import latex, latex_subset
 
 #: an item every reader reads (Lark declines most of what the pre-pass writes: see --show-wrong)
 SAMPLE = r"\frac{1}{2} m v^2 + m g l \cos(\theta)"
 #: what each reader costs before its first item, run in a fresh interpreter after ``import sympy``
 FIRST_USE = {
-    "lagrade": "from lagrade.reading import latex\nlatex._sympy_parse(S)",
+    "lagrade": "from lagrade.answer.reading import latex\nlatex._sympy_parse(S)",
     "antlr": "from sympy.parsing.latex import parse_latex\nparse_latex(S, strict=True)",
     "lark": "from sympy.parsing.latex import parse_latex\nparse_latex(S, backend='lark')",
 }
@@ -128,8 +128,8 @@ class Text:
 
 def answer_pieces(paths: list[tuple[Path, str]]) -> dict[Path, list[Piece]]:
     """Every LaTeX item of each answer file, captured while lagrade loads it."""
-    from lagrade.reading.load import load_answer
-    from lagrade.library import load_problem
+    from lagrade.answer.reading.load import load_answer
+    from lagrade.problem.library import load_problem
 
     out: dict[Path, list[Piece]] = {}
     real_piece, real_parse = latex._Names.parse_piece, latex._sympy_parse

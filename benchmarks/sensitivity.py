@@ -1,4 +1,4 @@
-"""What error each accuracy preset catches (lagrade.research.sensitivity): every dynamics part, each
+"""What error each accuracy preset catches (lagrade.uses.research.sensitivity): every dynamics part, each
 parameter scaled by (1 + eps), graded under fast, default and strict.
 
     python benchmarks/sensitivity.py                 # every problem (about 2 minutes)
@@ -11,8 +11,8 @@ from __future__ import annotations
 import argparse
 import time
 
-from lagrade.library import problem_ids
-from lagrade.research.sensitivity import markdown, scan
+from lagrade.problem.library import problem_ids
+from lagrade.uses.research.sensitivity import markdown, scan
 
 
 def main() -> None:

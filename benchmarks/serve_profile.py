@@ -1,5 +1,5 @@
 """Where one submission's time goes on `lagrade serve`: the stages of serve_load.py's 12.14 answers,
-timed one by one in one warm grader (the same :class:`lagrade.bulk.worker.Grader` the server runs).
+timed one by one in one warm grader (the same :class:`lagrade.uses.bulk.worker.Grader` the server runs).
 
     python benchmarks/serve_profile.py [--answers 120] [--seed 1]
 
@@ -24,7 +24,7 @@ import tempfile
 import time
 from pathlib import Path
 
-# as a grader process runs (lagrade.bulk.worker.grader_environment): sympy reads this once, on import
+# as a grader process runs (lagrade.uses.bulk.worker.grader_environment): sympy reads this once, on import
 os.environ.setdefault("SYMPY_CACHE_SIZE", "20000")
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from serve_load import answers, pick  # noqa: E402  (the same answers, drawn the same way)
@@ -38,15 +38,15 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=1)
     args = ap.parse_args()
 
-    from lagrade.reading.load import load_answer
-    from lagrade.jail.sandbox import SandboxLimits
-    from lagrade.bulk.assignment import parse_assignment
-    from lagrade.bulk.display import show
-    from lagrade.bulk.layout import Submission, file_hash
-    from lagrade.bulk.worker import Grader, problem_parts
-    from lagrade.grade import grade_values
-    from lagrade.server.db import Database
-    from lagrade.server.grading import check_json, make_plan
+    from lagrade.answer.reading.load import load_answer
+    from lagrade.answer.jail.sandbox import SandboxLimits
+    from lagrade.uses.bulk.assignment import parse_assignment
+    from lagrade.uses.bulk.display import show
+    from lagrade.uses.bulk.layout import Submission, file_hash
+    from lagrade.uses.bulk.worker import Grader, problem_parts
+    from lagrade.verdicts.grade import grade_values
+    from lagrade.uses.server.db import Database
+    from lagrade.uses.server.grading import check_json, make_plan
 
     work = Path(tempfile.mkdtemp(prefix="lagrade-serve-profile-"))
     try:

@@ -8,11 +8,11 @@ to the ratio. Three comparisons:
 1. **Cost per trajectory** (target: batched >= 5x cheaper). lagrade's ``integrate`` on the grader's
    own reference rates (``scene_model(mech).compiled_rates``): its batched DOP853, K trajectories stepped together,
    each with its own step size and error control, each stage one call of the compiled rates
-   (machine code through symengine's LLVM ``Lambdify``, ``lagrade.numeric``; numpy code otherwise),
+   (machine code through symengine's LLVM ``Lambdify``, ``lagrade.numbers.numeric``; numpy code otherwise),
    against the plain way: lambdify the closed-form accelerations once and call
    ``scipy.integrate.solve_ivp(method="DOP853")`` once per trajectory.
 2. **Right-hand side per evaluation** (target: lagrade <= 3x numba). ``mech.accelerations`` (the
-   compiled accelerations: machine code through symengine, ``lagrade.numeric.Compiled``, or numpy
+   compiled accelerations: machine code through symengine, ``lagrade.numbers.numeric.Compiled``, or numpy
    code where symengine declines or ``LAGRADE_NATIVE=0``; the header says which) on a batch of K
    states against an ``@njit`` loop over the K columns that evaluates the same closed-form
    accelerations (lambdified with ``cse=True``, compiled by numba once before timing) into a
@@ -25,7 +25,7 @@ to the ratio. Three comparisons:
 
 Why the comparisons are fair: the same expressions (the accelerations lagrade derives, or, for PyDy,
 its own derivation checked equal to lagrade's right-hand side at random states before anything is
-timed), the same initial states and parameter values (``lagrade.sampling`` with a fixed seed), the
+timed), the same initial states and parameter values (``lagrade.compare.sampling`` with a fixed seed), the
 same tolerances (rtol = atol) and the same 201 output times over [0, horizon]; results are checked to
 agree before their timings are printed. One-off costs (lambdify, numba compilation, PyDy's derivation
 and code generation) are outside the timings and reported separately where they matter.
@@ -55,11 +55,11 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from lagrade.compare.trajectory import ACCURACY, integrate
-from lagrade.grade import references
-from lagrade.library import load_problem
-from lagrade.numeric import backend
-from lagrade.sampling import rng_for, sample_points, state_arrays
-from lagrade.scene_model import scene_model
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem
+from lagrade.numbers.numeric import backend
+from lagrade.compare.sampling import rng_for, sample_points, state_arrays
+from lagrade.compare.scene_model import scene_model
 
 PROBLEM = "12.14"
 SAMPLES = 201

@@ -16,19 +16,19 @@ from functools import cache
 import numpy as np
 import sympy as sp
 
-from lagrade.reading.text import parse_math
-from lagrade.checkers.dynamics import split_energy
-from lagrade.checkers.values import _reference
-from lagrade.grade import references
-from lagrade.library import load_problem
-from lagrade.numeric import evaluate
-from lagrade.sampling import (
+from lagrade.answer.reading.text import parse_math
+from lagrade.verdicts.checkers.dynamics import split_energy
+from lagrade.verdicts.checkers.values import _reference
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem
+from lagrade.numbers.numeric import evaluate
+from lagrade.compare.sampling import (
     rng_for,
     sample_points,
     state_arrays,
     with_reference_dynamics,
 )
-from lagrade.symbols import T, to_state
+from lagrade.problem.symbols import T, to_state
 
 K = 12
 _FUNCS = {"sin", "cos", "tan", "cot", "sec", "csc", "asin", "acos", "atan", "acot", "atan2", "sinh", "cosh", "tanh",

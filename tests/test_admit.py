@@ -8,7 +8,7 @@ import pytest
 import sympy as sp
 
 import lagrade
-from lagrade.checkers.admit import Refuted, linear_rows, simple_number
+from lagrade.verdicts.checkers.admit import Refuted, linear_rows, simple_number
 
 t = sp.Symbol("t")
 m1, m2, m3, m4, g = sp.symbols("m1 m2 m3 m4 g", positive=True)

@@ -9,10 +9,10 @@ import sympy as sp
 from leaks import reveals
 
 import lagrade
-from lagrade.describe import show_text
-from lagrade.library import load_problem
-from lagrade.spec import Problem, SpecError, load_problem_file
-from lagrade.verdict_memo import VerdictMemo
+from lagrade.problem.describe import show_text
+from lagrade.problem.library import load_problem
+from lagrade.problem.spec import Problem, SpecError, load_problem_file
+from lagrade.verdicts.verdict_memo import VerdictMemo
 
 t = sp.Symbol("t")
 m, k, g, a0, l0 = sp.symbols("m k g a0 l0")
@@ -86,8 +86,8 @@ def test_a_following_part_falls_back_to_the_primary_and_says_so():
 
 
 def test_grading_one_following_part_grades_what_it_follows():
-    from lagrade.reading.load import LoadedAnswer
-    from lagrade.grade import grade_values
+    from lagrade.answer.reading.load import LoadedAnswer
+    from lagrade.verdicts.grade import grade_values
 
     problem = load_problem("12.47")
     answer = LoadedAnswer(values={"H": ELEVATOR_H, "H_conserved": True})
@@ -97,8 +97,8 @@ def test_grading_one_following_part_grades_what_it_follows():
 
 
 def test_the_verdict_memo_keeps_a_following_part_apart_per_formulation():
-    from lagrade.reading.load import LoadedAnswer
-    from lagrade.grade import grade_values
+    from lagrade.answer.reading.load import LoadedAnswer
+    from lagrade.verdicts.grade import grade_values
 
     problem, memo = load_problem("12.47"), VerdictMemo()
     verdicts = []
@@ -109,9 +109,9 @@ def test_the_verdict_memo_keeps_a_following_part_apart_per_formulation():
 
 
 def test_a_followed_part_is_memoized_with_its_formulation(monkeypatch):
-    from lagrade.reading.load import LoadedAnswer
-    from lagrade.checkers import CHECKERS
-    from lagrade.grade import grade_values
+    from lagrade.answer.reading.load import LoadedAnswer
+    from lagrade.verdicts.checkers import CHECKERS
+    from lagrade.verdicts.grade import grade_values
 
     calls = []
     for kind, checker in list(CHECKERS.items()):
@@ -184,9 +184,9 @@ def test_a_scaled_lagrangians_hamiltonian_is_no_gauge():
 
 
 def test_rates_that_no_hamiltonian_generates_are_refused():
-    from lagrade.checkers.gauge import _is_hamiltonian
-    from lagrade.grade import references
-    from lagrade.sampling import rng_for, sample_points
+    from lagrade.verdicts.checkers.gauge import _is_hamiltonian
+    from lagrade.verdicts.grade import references
+    from lagrade.compare.sampling import rng_for, sample_points
 
     mech = references(load_problem("12.37"))["planar"]
     pX, pY, pr, pth = mech.s.p
@@ -198,7 +198,7 @@ def test_rates_that_no_hamiltonian_generates_are_refused():
 
 
 def _alternative_mistakes():
-    from lagrade.library import problem_ids
+    from lagrade.problem.library import problem_ids
 
     for pid in problem_ids():
         try:
@@ -217,8 +217,8 @@ def test_a_named_mistake_of_an_alternative_is_recognised_in_its_formulation(pid,
     right, gets its sentence, and the sentence gives nothing away."""
     from test_named_mistakes import _as_answer
 
-    from lagrade.reading.load import LoadedAnswer
-    from lagrade.grade import grade_values
+    from lagrade.answer.reading.load import LoadedAnswer
+    from lagrade.verdicts.grade import grade_values
 
     problem = load_problem(pid)
     part = problem.part(name)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
-from lagrade.reading.text import TextAnswerError, load_toml_answer, parse_math
+from lagrade.answer.reading.text import TextAnswerError, load_toml_answer, parse_math
 
 t = sp.Symbol("t")
 theta = sp.Function("theta")(t)

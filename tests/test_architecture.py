@@ -63,5 +63,29 @@ def test_a_circle_is_found():
     """The search above is not vacuous: an added import back from the derivation to the checkers
     makes a circle."""
     graph = grimp.build_graph("lagrade", exclude_type_checking_imports=True)
-    graph.add_import(importer="lagrade.reference", imported="lagrade.checkers.dynamics")
-    assert any({"lagrade.reference", "lagrade.checkers.dynamics"} <= set(c) for c in circles(graph))
+    graph.add_import(importer="lagrade.derive.reference", imported="lagrade.verdicts.checkers.dynamics")
+    assert any({"lagrade.derive.reference", "lagrade.verdicts.checkers.dynamics"} <= set(c) for c in circles(graph))
+
+
+def _listed(text: str) -> list[tuple[int, str]]:
+    block = text.split("```text\nsrc/lagrade/\n", 1)[1].split("```", 1)[0]
+    return [((len(line) - len(line.lstrip(" "))) // 2, line.split()[0]) for line in block.splitlines() if line.strip()]
+
+
+def test_the_tree_in_architecture_md_is_the_tree():
+    """docs/architecture.md lists src/lagrade two levels deep; a module added, moved or removed
+    without the listing (python scripts/tree.py prints it) fails here."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("tree", ROOT / "scripts" / "tree.py")
+    tree = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tree)
+    actual = [(depth, name) for depth, name, _ in tree.listing()]
+    assert _listed((ROOT / "docs" / "architecture.md").read_text(encoding="utf-8")) == actual
+
+
+def test_the_top_of_the_package_is_the_layers():
+    """Issue 37: `ls src/lagrade` shows the layers and nothing else but the package's own files."""
+    top = {p.name for p in (ROOT / "src" / "lagrade").iterdir() if p.name != "__pycache__"}
+    assert top == {"__init__.py", "__main__.py", "_version.py", "problem", "numbers", "derive", "answer",
+                   "compare", "verdicts", "uses", "cli"}

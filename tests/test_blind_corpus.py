@@ -872,7 +872,7 @@ def derived(pid):
 
 def load(path: Path, coords, extra, params):
     if path.suffix == ".toml":
-        from lagrade.reading.text import load_toml_answer
+        from lagrade.answer.reading.text import load_toml_answer
 
         functions = list(coords) + ["p_" + c for c in coords]
         known = list(params) + list(extra) + ["delta_" + c for c in coords] + ["t"]

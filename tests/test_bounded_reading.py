@@ -17,7 +17,7 @@ import time
 
 import pytest
 
-from lagrade.limits import (
+from lagrade.problem.limits import (
     MAX_DEPTH,
     MAX_DERIVATIVE_TERMS,
     MAX_EXPANDED_TERMS,
@@ -114,7 +114,7 @@ def test_a_file_nested_too_deeply_is_unusable_in_one_line(tmp_path, name):
 
 def test_the_bounds_stated_are_the_bounds_applied():
     """Every refusal names the limit it applies, as docs/safety.md states it."""
-    from lagrade.notation import (
+    from lagrade.problem.notation import (
         RebuildError,
         TextAnswerError,
         check_derivative,
@@ -147,7 +147,7 @@ def test_the_bounds_stated_are_the_bounds_applied():
 
 def test_a_long_sum_in_text_is_not_nested():
     """Python's tree nests ``a + b + c`` one level a term: a sum of 300 terms was "nested too deeply"."""
-    from lagrade.notation import parse_math
+    from lagrade.problem.notation import parse_math
 
     import sympy as sp
 
@@ -160,8 +160,8 @@ def test_a_long_sum_in_text_is_not_nested():
 def test_reading_runs_under_the_grading_bound(tmp_path, monkeypatch):
     """Reading an answer's text (here made slow on purpose) is bounded by the CPU time of grading:
     the check ends with every part invalid, in about the bound, instead of reading for as long as it takes."""
-    from lagrade.grade import check
-    from lagrade.reading import load
+    from lagrade.verdicts.grade import check
+    from lagrade.answer.reading import load
 
     read = load._load_toml
 
@@ -182,7 +182,7 @@ def test_reading_runs_under_the_grading_bound(tmp_path, monkeypatch):
 
 
 def test_values_given_in_python_are_screened_alike():
-    from lagrade.grade import check
+    from lagrade.verdicts.grade import check
 
     import sympy as sp
 

@@ -10,11 +10,11 @@ from pathlib import Path
 
 import pytest
 
-from lagrade import cache
-from lagrade.reading.load import load_answer
-from lagrade.grade import grade_values
-from lagrade.library import load_problem
-from lagrade.reference import ReferenceCache
+from lagrade.derive import cache
+from lagrade.answer.reading.load import load_answer
+from lagrade.verdicts.grade import grade_values
+from lagrade.problem.library import load_problem
+from lagrade.derive.reference import ReferenceCache
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -65,7 +65,7 @@ def test_a_check_never_rewrites_an_entry_it_loaded_but_cache_build_does(tmp_path
     assert result["score"] < result["max_score"]
     assert entry.read_bytes() == before
     # `lagrade cache build` grades the reference solution into the entry it loads, and may add to it
-    from lagrade import grade
+    from lagrade.verdicts import grade
 
     monkeypatch.setenv("LAGRADE_CACHE", str(tmp_path / "c"))
     monkeypatch.setattr(grade, "_REFERENCES", {})  # as in a fresh process: loaded from the entry
@@ -79,7 +79,7 @@ def test_a_check_never_rewrites_an_entry_it_loaded_but_cache_build_does(tmp_path
 
 
 def _warm(problem) -> ReferenceCache:
-    from lagrade.grade import references
+    from lagrade.verdicts.grade import references
 
     grade_values(problem, load_answer(ROOT / "reference_solutions" / problem.id / "answer.py", problem), read_as=())
     return references(problem)
@@ -152,7 +152,7 @@ def test_cache_off(monkeypatch):
 
 
 def test_answers_can_never_read_the_cache(monkeypatch, tmp_path):
-    from lagrade.jail import child
+    from lagrade.answer.jail import child
 
     monkeypatch.setenv("LAGRADE_CACHE", str(tmp_path / "c"))
     child.secret_dirs.cache_clear()
@@ -187,7 +187,7 @@ def test_cache_build_byte_compiles_lagrade_even_where_python_would_not_write_byt
     import lagrade
 
     package = Path(lagrade.__file__).parent
-    compiled = Path(importlib.util.cache_from_source(str(package / "readback.py")))
+    compiled = Path(importlib.util.cache_from_source(str(package / "verdicts" / "readback.py")))
     compiled.unlink(missing_ok=True)
     env = {**os.environ, "LAGRADE_CACHE": str(tmp_path / "c"), "PYTHONDONTWRITEBYTECODE": "1"}
     done = subprocess.run([sys.executable, "-m", "lagrade", "cache", "build", "12.4"], capture_output=True,

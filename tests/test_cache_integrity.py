@@ -14,10 +14,10 @@ from pathlib import Path
 
 import pytest
 
-from lagrade import cache
-from lagrade.reading.load import load_answer
-from lagrade.grade import grade_values, references
-from lagrade.library import load_problem
+from lagrade.derive import cache
+from lagrade.answer.reading.load import load_answer
+from lagrade.verdicts.grade import grade_values, references
+from lagrade.problem.library import load_problem
 
 ROOT = Path(__file__).resolve().parents[1]
 PROBLEM = load_problem("12.43")

@@ -26,9 +26,9 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.describe import show_text
-from lagrade.library import load_problem, problem_ids
-from lagrade.spec import Problem, System
+from lagrade.problem.describe import show_text
+from lagrade.problem.library import load_problem, problem_ids
+from lagrade.problem.spec import Problem, System
 
 ROOT = Path(__file__).resolve().parents[1]
 #: CI clones the repository beside shared/ (the chapter and the catalogue are not part of it)

@@ -1,4 +1,4 @@
-"""`lagrade check` and `lagrade.check(...)` are one path (`lagrade.grade.check`): the same file gives
+"""`lagrade check` and `lagrade.check(...)` are one path (`lagrade.verdicts.grade.check`): the same file gives
 the same result either way, a problem file's scene error is its FILE:LINE line either way, and exit
 code 2 means what it meant when the CLI read the loaded answer itself."""
 
@@ -12,11 +12,11 @@ import pytest
 from click.testing import CliRunner
 
 import lagrade
-from lagrade import grade
-from lagrade.reading.load import load_answer
+from lagrade.verdicts import grade
+from lagrade.answer.reading.load import load_answer
 from lagrade.cli import main
-from lagrade.library import SceneFileError, load_problem
-from lagrade.spec import SceneError, SpecError
+from lagrade.problem.library import SceneFileError, load_problem
+from lagrade.problem.spec import SceneError, SpecError
 
 ROOT = Path(__file__).resolve().parents[1]
 GOLDEN = ROOT / "tests" / "answers"

@@ -112,7 +112,7 @@ def test_read_back_is_one_line_in_the_books_notation():
     """The terminal read-back is one line per value: dots for velocities, subscripts, superscripts."""
     import sympy as sp
 
-    from lagrade.readback import as_unicode
+    from lagrade.verdicts.readback import as_unicode
 
     t = sp.Symbol("t")
     th = sp.Function("theta1")(t)
@@ -128,7 +128,7 @@ def test_read_back_in_latex_keeps_powers_of_coordinates_and_their_derivatives():
     """The notation is printed, not substituted: a power of q(t) or of q'(t) keeps its exponent."""
     import sympy as sp
 
-    from lagrade.readback import as_latex, as_unicode
+    from lagrade.verdicts.readback import as_latex, as_unicode
 
     t = sp.Symbol("t")
     th = sp.Function("theta1")(t)

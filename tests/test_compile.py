@@ -1,4 +1,4 @@
-"""Machine code (lagrade.numeric.Compiled, symengine's LLVM Lambdify) computes what the numpy code
+"""Machine code (lagrade.numbers.numeric.Compiled, symengine's LLVM Lambdify) computes what the numpy code
 computes, or declines to; linear solves of 3 or more unknowns agree with LAPACK's."""
 
 import gc
@@ -11,10 +11,10 @@ import sympy as sp
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from lagrade import numeric
-from lagrade.grade import references
-from lagrade.library import load_problem, problem_ids
-from lagrade.numeric import (
+from lagrade.numbers import numeric
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem, problem_ids
+from lagrade.numbers.numeric import (
     Compiled,
     call_blocks,
     compile_exprs,
@@ -24,8 +24,8 @@ from lagrade.numeric import (
     is_machine_code,
     solve_batch,
 )
-from lagrade.sampling import rng_for, sample_points, state_arrays
-from lagrade.scene_model import scene_model
+from lagrade.compare.sampling import rng_for, sample_points, state_arrays
+from lagrade.compare.scene_model import scene_model
 
 pytestmark = pytest.mark.skipif(not numeric.machine_code(), reason="symengine is not installed")
 

@@ -12,7 +12,7 @@ import pytest
 import sympy as sp
 
 import lagrade
-from lagrade.checkers.base import factor_text
+from lagrade.verdicts.checkers.base import factor_text
 
 t = sp.Symbol("t")
 M, R, F, m, g, l, a = sp.symbols("M R F m g l a", positive=True)

@@ -110,9 +110,9 @@ def _answer_toml(data: dict) -> bool:
 @pytest.mark.parametrize("block", of("toml"), ids=str)
 def test_a_toml_block_is_valid(block):
     """Parsed, then validated by the model that reads it (answer blocks are graded in the next test)."""
-    from lagrade.bulk.assignment import Assignment
-    from lagrade.server.lti import LtiConfig
-    from lagrade.spec import GeneralFunction, Part, Problem
+    from lagrade.uses.bulk.assignment import Assignment
+    from lagrade.uses.server.lti import LtiConfig
+    from lagrade.problem.spec import GeneralFunction, Part, Problem
 
     data = _toml(block)
     if _answer_toml(data):
@@ -146,7 +146,7 @@ def test_an_answer_toml_block_earns_full_marks(block, tmp_path):
 @pytest.mark.parametrize("block", of("json"), ids=str)
 def test_quoted_json_names_the_result_fields(block):
     """The quoted `--json` output is abridged ("..."); its keys are the model's."""
-    from lagrade.result import CheckResult, PartResult
+    from lagrade.verdicts.result import CheckResult, PartResult
 
     keys = set(re.findall(r'"(\w+)":', block.body))
     top = {"problem", "score", "max_score", "parts", "problems"}

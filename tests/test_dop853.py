@@ -20,7 +20,7 @@ from scipy.integrate import solve_ivp
 
 from lagrade.compare.dop853 import ColumnEvent, ColumnResult, solve
 from lagrade.compare.trajectory import ACCURACY, BatchedEvent, integrate
-from lagrade.numeric import CompiledRates, compile_exprs, compile_numpy
+from lagrade.numbers.numeric import CompiledRates, compile_exprs, compile_numpy
 
 
 def oscillators(w: np.ndarray):

@@ -14,13 +14,13 @@ import pytest
 from click.testing import CliRunner
 
 from lagrade.cli import main
-from lagrade.effects import DISSIPATION, TIME_CAPABLE, machinery
-from lagrade.library import load_problem, problem_ids
-from lagrade.scene_model import SceneModel
-from lagrade.reference import Mechanics, SceneError
-from lagrade.sampling import rng_for, sample_points, state_arrays
-from lagrade.spec import Problem
-from lagrade.symbols import T
+from lagrade.derive.effects import DISSIPATION, TIME_CAPABLE, machinery
+from lagrade.problem.library import load_problem, problem_ids
+from lagrade.compare.scene_model import SceneModel
+from lagrade.derive.reference import Mechanics, SceneError
+from lagrade.compare.sampling import rng_for, sample_points, state_arrays
+from lagrade.problem.spec import Problem
+from lagrade.problem.symbols import T
 
 
 @pytest.mark.parametrize("pid", problem_ids())
@@ -137,7 +137,7 @@ def _friction_forms():
 def test_every_form_of_dry_friction_is_read_as_sign_and_drag_is_not():
     import sympy as sp
 
-    from lagrade.effects import dry_friction_form
+    from lagrade.derive.effects import dry_friction_form
 
     velocities, v, jump, smooth = _friction_forms()
     for name, force in jump.items():
@@ -155,8 +155,8 @@ def test_every_form_of_dry_friction_is_read_as_sign_and_drag_is_not():
 @pytest.mark.parametrize("law", ["-mu*m*g*x_d/Abs(x_d)", "-mu*m*g*Abs(x_d)/x_d", "-mu*m*g*sign(x_d)"])
 def test_dry_friction_declared_as_drag_is_rejected(law):
     """x_d/Abs(x_d) used to pass as drag: dry friction needs dissipation_friction (sticking)."""
-    from lagrade.reference import Mechanics
-    from lagrade.spec import Problem, SceneError
+    from lagrade.derive.reference import Mechanics
+    from lagrade.problem.spec import Problem, SceneError
 
     data = {"id": "t", "title": "block", "parameters": [{"name": "m"}, {"name": "mu"}, {"name": "g"}],
             "systems": [{"effects": ["gravity", "dissipation_drag"], "T": "m*x_d**2/2", "V": "0",
@@ -203,13 +203,13 @@ def test_the_compiled_model_has_exactly_the_declared_machinery(pid):
     unilateral contact."""
     import numpy as np
 
-    from lagrade.effects import machinery
-    from lagrade.grade import references
-    from lagrade.library import load_problem
-    from lagrade.numeric import Compiled
-    from lagrade.sampling import rng_for, sample_points, state_arrays
-    from lagrade.scene_model import scene_model
-    from lagrade.symbols import T
+    from lagrade.derive.effects import machinery
+    from lagrade.verdicts.grade import references
+    from lagrade.problem.library import load_problem
+    from lagrade.numbers.numeric import Compiled
+    from lagrade.compare.sampling import rng_for, sample_points, state_arrays
+    from lagrade.compare.scene_model import scene_model
+    from lagrade.problem.symbols import T
 
     problem = load_problem(pid)
     refs = references(problem)
@@ -238,11 +238,11 @@ def test_grading_integrates_an_autonomous_scene_without_t_or_events():
     """12.14 (a double pendulum: no time dependence, no force, no contact): the reference grading
     integrates takes no t argument and watches no event. On main it was `Mechanics.lagrange_rates`,
     compiled with [q, q', t, params] whatever the scene declared."""
-    from lagrade.checkers.base import Context
-    from lagrade.checkers.dynamics import _lagrange_solver, lagrange_inputs
-    from lagrade.grade import references
-    from lagrade.library import load_problem
-    from lagrade.research.effectsbench import _dynamics_part
+    from lagrade.verdicts.checkers.base import Context
+    from lagrade.verdicts.checkers.dynamics import _lagrange_solver, lagrange_inputs
+    from lagrade.verdicts.grade import references
+    from lagrade.problem.library import load_problem
+    from lagrade.uses.research.effectsbench import _dynamics_part
 
     problem = load_problem("12.14")
     system = problem.systems[0]

@@ -7,7 +7,7 @@ import json
 from pathlib import Path
 
 import lagrade
-from lagrade.checkers import CHECKERS
+from lagrade.verdicts.checkers import CHECKERS
 
 REFERENCE = Path(__file__).resolve().parents[1] / "reference_solutions" / "12.43" / "answer.py"
 SECRET = "the-reference-expression-9f3c"

@@ -9,7 +9,7 @@ from __future__ import annotations
 import sympy as sp
 
 import lagrade
-from lagrade.credit import Credit
+from lagrade.verdicts.credit import Credit
 
 t = sp.Symbol("t")
 m, M, g, phi, s0 = sp.symbols("m M g phi s0", positive=True)

@@ -7,9 +7,9 @@ from __future__ import annotations
 import sympy as sp
 
 import lagrade
-from lagrade.bulk.assignment import AssignedProblem, part_points, points
-from lagrade.describe import show_text
-from lagrade.library import load_problem
+from lagrade.uses.bulk.assignment import AssignedProblem, part_points, points
+from lagrade.problem.describe import show_text
+from lagrade.problem.library import load_problem
 
 t = sp.Symbol("t")
 

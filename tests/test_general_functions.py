@@ -9,10 +9,10 @@ import pytest
 import sympy as sp
 from pydantic import ValidationError
 
-from lagrade import general_functions as gf
-from lagrade.grade import check
-from lagrade.notation import TextAnswerError, parse_math
-from lagrade.spec import GeneralFunction, Problem
+from lagrade.derive import general_functions as gf
+from lagrade.verdicts.grade import check
+from lagrade.problem.notation import TextAnswerError, parse_math
+from lagrade.problem.spec import GeneralFunction, Problem
 
 t = sp.Symbol("t")
 m, omega, k = sp.symbols("m omega k", positive=True)
@@ -113,7 +113,7 @@ def test_an_answer_right_for_one_function_only_is_wrong(monkeypatch):
     substitute it passes (so the construction is right), with the several the grader uses it fails."""
     lam = gf.random_function(GeneralFunction(name="V", args=["r"], concrete="k*r**2/2"), 1)
     lucky = H_ROT + lam(r_) + (V(r_) - lam(r_))**2
-    monkeypatch.setattr("lagrade.checkers.general.INSTANCES", 1)
+    monkeypatch.setattr("lagrade.verdicts.checkers.general.INSTANCES", 1)
     assert verdicts("12.39", H=lucky)["H"] == "correct"
     monkeypatch.undo()
     res = check("12.39", grading_seconds=math.inf, H=lucky)
@@ -151,7 +151,7 @@ def test_feedback_on_a_general_answer_names_no_substitute():
 # --------------------------------------------------------------------------- LaTeX, show, cache
 
 def test_latex_reads_calls_primes_and_leibniz_derivatives_of_a_declared_function():
-    from lagrade.reading.latex import parse_latex_answer
+    from lagrade.answer.reading.latex import parse_latex_answer
 
     r = sp.Function("r")(t)
     F = {"V": 1}
@@ -174,8 +174,8 @@ def test_the_fast_latex_reader_reads_a_primed_call_as_sympy_does(text):
 
 
 def test_show_and_template_name_the_function():
-    from lagrade.describe import show_text, template_text
-    from lagrade.library import load_problem
+    from lagrade.problem.describe import show_text, template_text
+    from lagrade.problem.library import load_problem
 
     problem = load_problem("12.26")
     assert "function  U(xp, yp)" in show_text(problem)
@@ -185,8 +185,8 @@ def test_show_and_template_name_the_function():
 def test_substitute_scenes_survive_the_disk_cache_format():
     import pickle
 
-    from lagrade.grade import references
-    from lagrade.library import load_problem
+    from lagrade.verdicts.grade import references
+    from lagrade.problem.library import load_problem
 
     problem = load_problem("12.40")
     refs = references(problem)
@@ -206,8 +206,8 @@ def test_a_call_with_the_wrong_arguments_is_invalid_with_the_reason():
 def test_the_substitute_scenes_are_the_books_physics():
     """The derivation with a random V, against an independent Legendre transform of the book's L with
     the same V (sympy alone): H' = p_r^2/2m + p_phip^2/(2 m r^2) - omega p_phip + V(r)."""
-    from lagrade.grade import references
-    from lagrade.library import load_problem
+    from lagrade.verdicts.grade import references
+    from lagrade.problem.library import load_problem
 
     mech = references(load_problem("12.39")).instance("Sp", 3)
     lam = gf.random_function(GeneralFunction(name="V", args=["r"], concrete="0"), 3)

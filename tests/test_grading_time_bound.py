@@ -18,8 +18,8 @@ from pathlib import Path
 import pytest
 
 import lagrade
-from lagrade import grade
-from lagrade.bulk.assignment import Limits
+from lagrade.verdicts import grade
+from lagrade.uses.bulk.assignment import Limits
 
 ROOT = Path(__file__).resolve().parents[1]
 REFERENCE = ROOT / "reference_solutions" / "12.22" / "answer.py"
@@ -89,7 +89,7 @@ def _spin(*args, **kwargs):
 
 
 def test_parts_graded_in_time_keep_their_verdicts(monkeypatch):
-    from lagrade.checkers import CHECKERS
+    from lagrade.verdicts.checkers import CHECKERS
 
     lagrade.check("12.22", REFERENCE, grading_seconds=120)  # references derived outside the bound below
     monkeypatch.setitem(CHECKERS, "expression", _spin)  # a, S_t and a_case never finish

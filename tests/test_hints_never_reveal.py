@@ -16,7 +16,7 @@ import sympy as sp
 from leaks import fragments, reveals
 
 import lagrade
-from lagrade.library import load_problem, problem_ids
+from lagrade.problem.library import load_problem, problem_ids
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -118,8 +118,8 @@ VALUE_PARTS = [pytest.param(pid, part.name, id=f"{pid}-{part.name}") for pid in 
 def test_feedback_on_a_scaled_reference_gives_nothing_away(pid, part_name):
     """Every result part, answered with its reference off by a factor (one entry of a dict or list):
     what the checker composes names the factor, never the value."""
-    from lagrade.reading.load import LoadedAnswer
-    from lagrade.grade import grade_values
+    from lagrade.answer.reading.load import LoadedAnswer
+    from lagrade.verdicts.grade import grade_values
     from test_named_mistakes import _as_answer
 
     problem = load_problem(pid)

@@ -20,9 +20,9 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.jail import kernel, sandbox, zygote
-from lagrade.jail.sandbox import SandboxLimits, run_answer_file
-from lagrade.library import reference_dir
+from lagrade.answer.jail import kernel, sandbox, zygote
+from lagrade.answer.jail.sandbox import SandboxLimits, run_answer_file
+from lagrade.problem.library import reference_dir
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the OS jail is Linux's")
 

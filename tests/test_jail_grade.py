@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.library import reference_dir
+from lagrade.problem.library import reference_dir
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the OS jail is Linux's")
 

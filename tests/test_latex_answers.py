@@ -10,9 +10,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import lagrade
-from lagrade.reading import latex
-from lagrade.reading.latex import MAX_LATEX_CHARS, _antlr_converter, is_latex, parse_latex_answer
-from lagrade.reading.text import TextAnswerError, load_toml_answer, parse_math
+from lagrade.answer.reading import latex
+from lagrade.answer.reading.latex import MAX_LATEX_CHARS, _antlr_converter, is_latex, parse_latex_answer
+from lagrade.answer.reading.text import TextAnswerError, load_toml_answer, parse_math
 
 ROOT = Path(__file__).resolve().parents[1]
 t = sp.Symbol("t")
@@ -267,9 +267,9 @@ def _latex_goldens():
 def test_fast_sll_parse_reads_every_golden_latex_answer_as_the_full_parser_does(path, monkeypatch):
     """The fast reader and the SLL-first parse are only speed-ups: on every LaTeX answer we have, they
     must give what the full LL parser gives (values and problems alike)."""
-    from lagrade.reading import latex, latex_subset
-    from lagrade.reading.load import load_answer
-    from lagrade.library import load_problem
+    from lagrade.answer.reading import latex, latex_subset
+    from lagrade.answer.reading.load import load_answer
+    from lagrade.problem.library import load_problem
 
     problem = load_problem(path.parent.name)
     fast = load_answer(path, problem)

@@ -14,7 +14,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from lagrade.reading import latex, latex_subset
+from lagrade.answer.reading import latex, latex_subset
 
 ROOT = Path(__file__).resolve().parents[1]
 CONVERTER = latex._antlr_converter()
@@ -142,8 +142,8 @@ def _golden_latex_answers():
 def test_the_reader_reads_every_golden_latex_answer_itself(monkeypatch):
     """Every item of every LaTeX answer we have goes through the reader, except the operator
     form d/dt(...) (a differential to sympy's grammar): sympy's parser is the fallback, not the rule."""
-    from lagrade.reading.load import load_answer
-    from lagrade.library import load_problem
+    from lagrade.answer.reading.load import load_answer
+    from lagrade.problem.library import load_problem
 
     read, declined = [], []
     real_read = latex_subset.read
@@ -176,8 +176,8 @@ def test_an_answer_the_reader_reads_does_not_load_sympys_latex_parser(tmp_path):
     answer.write_text('L = "\\\\frac{1}{2} m_1 \\\\dot{x}^2 + m_1 g x"\n', encoding="utf-8")
     probe = (
         "import sys\n"
-        "from lagrade.reading.load import load_answer\n"
-        "from lagrade.library import load_problem\n"
+        "from lagrade.answer.reading.load import load_answer\n"
+        "from lagrade.problem.library import load_problem\n"
         f"loaded = load_answer(__import__('pathlib').Path({str(answer)!r}), load_problem('12.22'))\n"
         "assert 'L' in loaded.values, loaded.problems\n"
         "print('sympy.parsing.latex._parse_latex_antlr' in sys.modules)\n"

@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 
 import lagrade
-from lagrade.checkers import dynamics
+from lagrade.verdicts.checkers import dynamics
 from lagrade.compare import trajectory as tr
 from lagrade.compare.trajectory import ACCURACY, Comparison, compare_runs, confirm_refutation
-from lagrade.result import PartResult
+from lagrade.verdicts.result import PartResult
 
 REFERENCE = Path(__file__).resolve().parents[1] / "reference_solutions" / "12.14" / "answer.py"
 
@@ -102,8 +102,8 @@ def test_the_student_view_hides_the_trajectory_evidence():
     (the separation and the time it happens say how far off the answer is)."""
     from types import SimpleNamespace
 
-    from lagrade.bulk.assignment import Rules
-    from lagrade.server import rules
+    from lagrade.uses.bulk.assignment import Rules
+    from lagrade.uses.server import rules
 
     evidence = {"t": 1.25, "separation": 40.0, "error_estimate": 0.01, "finer_separation": 39.0}
     part = {"part": "eom", "verdict": "incorrect", "score": 0.0, "feedback": "wrong", "trajectory_evidence": evidence}

@@ -12,11 +12,11 @@ import pytest
 import sympy as sp
 from leaks import reveals
 
-from lagrade.reading.load import LoadedAnswer
-from lagrade.checkers.values import _symbolic_reference
-from lagrade.grade import grade_values, references
-from lagrade.library import load_problem, problem_ids
-from lagrade.symbols import T
+from lagrade.answer.reading.load import LoadedAnswer
+from lagrade.verdicts.checkers.values import _symbolic_reference
+from lagrade.verdicts.grade import grade_values, references
+from lagrade.problem.library import load_problem, problem_ids
+from lagrade.problem.symbols import T
 
 
 def _cases():

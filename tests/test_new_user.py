@@ -82,7 +82,7 @@ def test_a_bad_credit_file_is_one_line(tmp_path):
 
 
 def test_list_with_no_problem_data_says_so(tmp_path, monkeypatch):
-    import lagrade.library as library
+    import lagrade.problem.library as library
 
     monkeypatch.setattr(library, "problem_dirs", lambda extra=(): [tmp_path / "none"])
     code, out = run("list")
@@ -101,7 +101,7 @@ def test_no_numpy_warning_reaches_the_student(tmp_path):
 def test_prairielearn_build_takes_the_assignment_as_the_readme_says(tmp_path, monkeypatch):
     """`lagrade prairielearn build hw7.toml -o pl/`: a question per problem of the assignment (the
     grader itself, wheels and Dockerfile, is built once; faked here, tests/deploy builds it)."""
-    import lagrade.deploy.prairielearn as pl
+    import lagrade.uses.deploy.prairielearn as pl
 
     built = []
 

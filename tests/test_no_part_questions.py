@@ -18,7 +18,7 @@ import pytest
 import sympy as sp
 
 import lagrade
-from lagrade.library import problem_ids
+from lagrade.problem.library import problem_ids
 
 ROOT = Path(__file__).resolve().parents[1]
 t = sp.Symbol("t")
@@ -304,8 +304,8 @@ def test_12_50_text_answers_give_the_table_as_a_table_or_one_string(tmp_path, mo
 def test_new_kinds_have_what_their_checkers_need(pid):
     """A numerical_solution part states its numbers, a conditions part what it asks: a problem file that
     forgets them fails here, not as an engine error on a student's answer."""
-    from lagrade.checkers.numerical import _numbers
-    from lagrade.grade import references
+    from lagrade.verdicts.checkers.numerical import _numbers
+    from lagrade.verdicts.grade import references
 
     problem = lagrade.load_problem(pid)
     for part in problem.parts:

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from lagrade.numeric import solve_batch
+from lagrade.numbers.numeric import solve_batch
 
 
 def test_solves_each_state_of_the_batch():
@@ -30,7 +30,7 @@ import sympy as sp  # noqa: E402
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from lagrade.numeric import Generated, compile_exprs, compile_linear_solve, compile_numpy  # noqa: E402
+from lagrade.numbers.numeric import Generated, compile_exprs, compile_linear_solve, compile_numpy  # noqa: E402
 
 x, y, z = sp.symbols("x y z")
 
@@ -105,7 +105,7 @@ def test_two_by_two_written_out_solves_any_well_conditioned_system(entries, b0, 
 
 # --------------------------------------------------------------------------- evaluating without compiling
 
-from lagrade.numeric import evaluate  # noqa: E402
+from lagrade.numbers.numeric import evaluate  # noqa: E402
 
 
 def test_evaluate_matches_compiled_code_on_every_node_kind():
@@ -129,7 +129,7 @@ def test_evaluate_falls_back_to_compiling_what_it_does_not_know():
 
 
 def _systems():
-    from lagrade.library import load_problem, problem_ids
+    from lagrade.problem.library import load_problem, problem_ids
 
     for pid in problem_ids():
         for system in load_problem(pid).systems:
@@ -138,9 +138,9 @@ def _systems():
 
 @pytest.mark.parametrize("pid, key", list(_systems()))
 def test_evaluate_agrees_with_compiled_code_on_every_reference(pid, key):
-    from lagrade.grade import references
-    from lagrade.library import load_problem
-    from lagrade.sampling import rng_for, sample_points
+    from lagrade.verdicts.grade import references
+    from lagrade.problem.library import load_problem
+    from lagrade.compare.sampling import rng_for, sample_points
 
     problem = load_problem(pid)
     mech = references(problem)[key]

@@ -13,10 +13,10 @@ import numpy as np
 import pytest
 
 from lagrade.compare.trajectory import ACCURACY, integrate
-from lagrade.grade import references
-from lagrade.library import load_problem, problem_ids
-from lagrade.sampling import rng_for, sample_points, state_arrays
-from lagrade.symbols import T
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem, problem_ids
+from lagrade.compare.sampling import rng_for, sample_points, state_arrays
+from lagrade.problem.symbols import T
 
 ROOT = Path(__file__).resolve().parents[1]
 IDS = problem_ids()

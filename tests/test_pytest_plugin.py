@@ -48,7 +48,7 @@ def test_a_course_with_its_own_names_is_collected_and_graded(course):
 
 
 def test_problem_ids_are_free_but_not_anything():
-    from lagrade.spec import ID
+    from lagrade.problem.spec import ID
 
     for pid in ("12.22", "ex12.3", PID, "HW-7.2", "a"):
         assert re.fullmatch(ID, pid)

@@ -10,7 +10,7 @@ import sympy as sp
 from hypothesis import HealthCheck, assume, given, settings
 
 from expression_strategies import expressions
-from lagrade.jail.rebuild import (
+from lagrade.answer.jail.rebuild import (
     MAX_NODES,
     EncodedValue,
     RebuildError,

@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from lagrade.jail import sandbox, zygote
-from lagrade.jail.rebuild import decode_value
-from lagrade.jail.sandbox import SandboxLimits, run_answer_file
+from lagrade.answer.jail import sandbox, zygote
+from lagrade.answer.jail.rebuild import decode_value
+from lagrade.answer.jail.sandbox import SandboxLimits, run_answer_file
 
 # wall time is generous so that a busy test machine still hits the CPU limit first
 FAST = SandboxLimits(cpu_seconds=2, wall_seconds=8, memory_mb=256)

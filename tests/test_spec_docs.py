@@ -10,7 +10,7 @@ import sys
 from pathlib import Path
 from typing import get_args
 
-from lagrade.spec import KINDS, PartKind, Problem, markdown_tables
+from lagrade.problem.spec import KINDS, PartKind, Problem, markdown_tables
 
 DOCS = Path(__file__).resolve().parents[1] / "docs" / "authoring-problems.md"
 
@@ -34,7 +34,7 @@ def test_every_field_says_what_it_holds():
 
 
 def test_one_table_of_kinds_drives_validation_and_the_checkers():
-    from lagrade.checkers import CHECKERS
+    from lagrade.verdicts.checkers import CHECKERS
 
     assert set(get_args(PartKind)) == set(KINDS) == set(CHECKERS)
 

@@ -8,7 +8,7 @@ from expression_strategies import expressions
 from hypothesis import given, settings
 from sympy.core.function import AppliedUndef
 
-from lagrade.symbols import NotationError, nodes_of, to_state
+from lagrade.problem.symbols import NotationError, nodes_of, to_state
 
 
 def test_coordinates_rates_and_assumptions_read_in_one_pass():

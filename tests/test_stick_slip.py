@@ -24,12 +24,12 @@ import pytest
 import sympy as sp
 
 import lagrade
-from lagrade.checkers import dynamics
+from lagrade.verdicts.checkers import dynamics
 from lagrade.compare.trajectory import ACCURACY, integrate
-from lagrade.library import load_problem
-from lagrade.numeric import CompiledRates
-from lagrade.reference import Mechanics
-from lagrade.scene_model import EquationsModel, SceneModel
+from lagrade.problem.library import load_problem
+from lagrade.numbers.numeric import CompiledRates
+from lagrade.derive.reference import Mechanics
+from lagrade.compare.scene_model import EquationsModel, SceneModel
 
 PROBLEM = Path(__file__).parent / "problems_stick_slip" / "coulomb-spring.toml"
 
@@ -247,7 +247,7 @@ def test_a_stuck_block_breaks_away_when_the_drive_exceeds_static_friction():
     s = mech.s
     xs, xd, xdd = s.q[0], s.qd[0], s.qdd[0]
     rows = [m * xdd + k * (xs - A * sp.sin(w * sp.Symbol("t"))) + mu * m * g * sp.sign(xd)]
-    from lagrade.symbols import T
+    from lagrade.problem.symbols import T
     rows = [rows[0].xreplace({sp.Symbol("t"): T})]
     args = [xs, xd, T, *mech.params, A, w]
     P = {"m": 1.0, "k": 10.0, "mu": 0.3, "g": 10.0, "A": 0.5, "w": 1.0}
@@ -272,7 +272,7 @@ class _TwoContacts:
 
     @staticmethod
     def model(c: np.ndarray):
-        from lagrade.scene_model import Branches, Switching
+        from lagrade.compare.scene_model import Branches, Switching
 
         class Model(Switching):
             dim = 4
@@ -310,7 +310,7 @@ def test_a_students_switching_arguments_are_merged_without_simplify():
     `simplify` slow (measured: 19.7 s at n = 120) is read in a moment."""
     import time
 
-    from lagrade.scene_model import branch_form
+    from lagrade.compare.scene_model import branch_form
 
     vv, ww, xx = sp.symbols("v w x")
     _, args, _, _ = branch_form([sp.sign(vv * (1 + xx) ** 2) + sp.sign(vv + 2 * vv * xx + vv * xx ** 2)], {vv, ww})
@@ -326,7 +326,7 @@ def test_a_students_switching_arguments_are_merged_without_simplify():
 def test_branch_symbols_never_take_a_name_already_in_use():
     """A parameter called sigma0 (a surface density, say) and a branch variable compiled side by side
     would be one argument twice; the branches take a name no argument or expression uses."""
-    from lagrade.scene_model import branch_form
+    from lagrade.compare.scene_model import branch_form
 
     vv, xx, s0 = sp.symbols("v x sigma0")
     rows, _, sig, _ = branch_form([s0 * xx + sp.sign(vv)], {vv}, [xx, vv, s0])

@@ -11,10 +11,10 @@ import pytest
 import sympy as sp
 
 import lagrade
-from lagrade.reading.text import load_toml_answer
-from lagrade.checkers.base import multiplier_names
-from lagrade.grade import references
-from lagrade.library import load_problem
+from lagrade.answer.reading.text import load_toml_answer
+from lagrade.verdicts.checkers.base import multiplier_names
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem
 
 t = sp.Symbol("t")
 m, omega, g, l, k, M, R, F = sp.symbols("m omega g l k M R F", positive=True)

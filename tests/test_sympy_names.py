@@ -8,8 +8,8 @@ import pytest
 import sympy
 
 import lagrade
-from lagrade.library import load_problem, problem_ids
-from lagrade.reading.load import is_sympys_own
+from lagrade.problem.library import load_problem, problem_ids
+from lagrade.answer.reading.load import is_sympys_own
 
 
 def _shadowed() -> list[tuple[str, str, str]]:

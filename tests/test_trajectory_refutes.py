@@ -9,12 +9,12 @@ from pathlib import Path
 import pytest
 
 import lagrade
-from lagrade.checkers.base import Context
-from lagrade.checkers.dynamics import _decide
+from lagrade.verdicts.checkers.base import Context
+from lagrade.verdicts.checkers.dynamics import _decide
 from lagrade.compare import trajectory as tr
 from lagrade.compare.trajectory import ACCURACY, Comparison
-from lagrade.grade import references
-from lagrade.library import load_problem
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem
 
 REFERENCE = Path(__file__).resolve().parents[1] / "reference_solutions" / "12.14" / "answer.py"
 

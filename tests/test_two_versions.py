@@ -14,7 +14,7 @@ import pytest
 import sympy as sp
 
 import lagrade
-from lagrade.library import load_problem
+from lagrade.problem.library import load_problem
 
 t = sp.Symbol("t")
 
@@ -155,7 +155,7 @@ def test_one_version_under_the_shared_name_gets_that_versions_credit_only(pid, s
 
 
 def test_a_shared_name_is_read_by_its_coordinates():
-    from lagrade.reading.load import version_for
+    from lagrade.answer.reading.load import version_for
 
     problem = load_problem("12.5")
     assert version_for(problem, "Q", {"l1": 1}) == "Q_b"

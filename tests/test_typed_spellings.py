@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import pytest
 
-from lagrade.library import load_problem
-from lagrade.server.answers import preview
+from lagrade.problem.library import load_problem
+from lagrade.uses.server.answers import preview
 
 
 @pytest.fixture(scope="module")
@@ -37,7 +37,7 @@ def test_the_help_before_typing_names_spellings_that_are_read(p1214):
     as the same rate; its power and equation forms too."""
     import re
 
-    from lagrade.describe import typing_help
+    from lagrade.problem.describe import typing_help
 
     said = typing_help(p1214)
     assert "theta1' (also theta1_d, theta1_dot or theta1dot)" in said and "theta2'" in said

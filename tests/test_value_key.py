@@ -10,8 +10,8 @@ import pytest
 import sympy as sp
 from hypothesis import HealthCheck, assume, given, settings
 
-from lagrade.jail.rebuild import rebuild_srepr
-from lagrade.reading.value_key import value_key
+from lagrade.answer.jail.rebuild import rebuild_srepr
+from lagrade.answer.reading.value_key import value_key
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from expression_strategies import expressions  # noqa: E402

@@ -9,13 +9,13 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from lagrade.reading.load import LoadedAnswer, load_answer
-from lagrade.jail.rebuild import expr_nodes, rebuild_nodes, rebuild_srepr
-from lagrade.checkers import CHECKERS
-from lagrade.credit import Credit
-from lagrade.grade import grade_values
-from lagrade.library import load_problem, problem_ids, reference_dir
-from lagrade.verdict_memo import VerdictMemo
+from lagrade.answer.reading.load import LoadedAnswer, load_answer
+from lagrade.answer.jail.rebuild import expr_nodes, rebuild_nodes, rebuild_srepr
+from lagrade.verdicts.checkers import CHECKERS
+from lagrade.verdicts.credit import Credit
+from lagrade.verdicts.grade import grade_values
+from lagrade.problem.library import load_problem, problem_ids, reference_dir
+from lagrade.verdicts.verdict_memo import VerdictMemo
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from test_named_mistakes import _as_answer  # noqa: E402

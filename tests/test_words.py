@@ -8,7 +8,7 @@ from pathlib import Path
 from click.testing import CliRunner
 
 from lagrade.cli import main
-from lagrade.words import at_level, in_words
+from lagrade.verdicts.words import at_level, in_words
 
 ANSWER = Path(__file__).parent / "answers" / "12.14" / "correct_plain.toml"
 ENGINE = ("correct: equal at every sampled state and trajectories agree over t in [0, 2] (DOP853 at rtol 1e-10) "

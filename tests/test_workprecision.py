@@ -8,9 +8,9 @@ import pytest
 from markdown_it import MarkdownIt
 
 from lagrade.compare.trajectory import ACCURACY, compare_runs
-from lagrade.numeric import CompiledRates, is_machine_code
-from lagrade.research import workprecision as wp
-from lagrade.scene_model import scene_model
+from lagrade.numbers.numeric import CompiledRates, is_machine_code
+from lagrade.uses.research import workprecision as wp
+from lagrade.compare.scene_model import scene_model
 
 TOLS = (1e-4, 1e-10)
 K = 2

@@ -1,4 +1,4 @@
-"""The clean zygote (lagrade.jail.zygote): the process students' code is forked from never held
+"""The clean zygote (lagrade.answer.jail.zygote): the process students' code is forked from never held
 the key, keeps none of the grader's descriptors, reaps what nobody asks about, dies with its
 grader, and leaves nothing behind."""
 
@@ -14,9 +14,9 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.jail import zygote
-from lagrade.jail.rebuild import decode_value
-from lagrade.jail.sandbox import SandboxLimits, run_answer_file, start_answer_file
+from lagrade.answer.jail import zygote
+from lagrade.answer.jail.rebuild import decode_value
+from lagrade.answer.jail.sandbox import SandboxLimits, run_answer_file, start_answer_file
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
 
@@ -71,8 +71,8 @@ def test_the_process_that_runs_answers_never_held_the_key(tmp_path):
     """A grader that has loaded a problem, derived its references and graded the reference solution
     holds them in memory; the zygote (and so every child) holds none of it. The control: the same
     search finds the key in the grader itself (a child forked from it, as before, would hold it)."""
-    from lagrade.grade import check, references
-    from lagrade.library import load_problem, reference_dir
+    from lagrade.verdicts.grade import check, references
+    from lagrade.problem.library import load_problem, reference_dir
 
     key = f"lagrade-reference-key-{secrets.token_hex(8)}".encode()
     kept = [bytearray(key)]  # stands for every secret the grader holds, in a form the search can find
@@ -145,7 +145,7 @@ def test_children_nobody_asks_about_are_reaped(tmp_path):
 
 
 def test_the_zygote_dies_with_its_grader_and_leaves_nothing():
-    script = ("import sys\nfrom lagrade.jail import zygote\nz = zygote.start()\nz.hello()\n"
+    script = ("import sys\nfrom lagrade.answer.jail import zygote\nz = zygote.start()\nz.hello()\n"
               "print(z.proc.pid, z.staging, flush=True)\nsys.stdin.read()\n")
     grader = subprocess.Popen([sys.executable, "-c", script], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
     pid, staging = (grader.stdout.readline().split() + [""])[:2]

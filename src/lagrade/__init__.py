@@ -9,12 +9,12 @@ from lagrade._version import __version__
 
 __all__ = ["CheckResult", "Problem", "__version__", "check", "load_problem"]
 
-_LAZY = {"CheckResult": "lagrade.result", "Problem": "lagrade.spec", "load_problem": "lagrade.library"}
+_LAZY = {"CheckResult": "lagrade.verdicts.result", "Problem": "lagrade.problem.spec", "load_problem": "lagrade.problem.library"}
 
 
 def check(problem, answer=None, **kwargs):
     """Grade an answer file, or parts given as sympy objects: ``lagrade.check("12.43", H=...)``."""
-    from lagrade.grade import check as _check
+    from lagrade.verdicts.grade import check as _check
 
     return _check(problem, answer, **kwargs)
 

@@ -117,13 +117,13 @@ def _expect_line(text: str) -> dict[str, str]:
 
 def part_names(pid: str) -> list[str]:
     """The parts of a problem as its TOML file lists them (reading the spec, not grading)."""
-    from lagrade.library import load_problem
+    from lagrade.problem.library import load_problem
 
     return [p.name for p in load_problem(pid).parts]
 
 
 def part_weights(pid: str) -> dict[str, float]:
-    from lagrade.library import load_problem
+    from lagrade.problem.library import load_problem
 
     return {p.name: p.weight for p in load_problem(pid).parts}
 
@@ -186,7 +186,7 @@ class Expected:
 
 
 def extra_parts(pid: str) -> set[str]:
-    from lagrade.library import load_problem
+    from lagrade.problem.library import load_problem
 
     return {p.name for p in load_problem(pid).parts if getattr(p, "extra", False)}
 

@@ -100,7 +100,7 @@ def test_a_grader_has_imported_what_sympy_loads_lazily_for_common_answers():
     # not loaded by `import sympy`: by `solve`, and by differentiating a Matrix
     lazy = ("sympy.physics.units", "sympy.combinatorics", "sympy.tensor.array.expressions")
     probe = ("import sys, sympy\nbefore = [m in sys.modules for m in {lazy!r}]\n"
-             "from lagrade.jail.zygote import _warm_sympy\n_warm_sympy()\n"
+             "from lagrade.answer.jail.zygote import _warm_sympy\n_warm_sympy()\n"
              "print(not any(before) and all(m in sys.modules for m in {lazy!r}))").format(lazy=lazy)
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=120)
     assert out.stdout.strip() == "True", out.stderr

@@ -7,8 +7,8 @@ import pytest
 from classcheck import assert_expected, stored
 from click.testing import CliRunner
 
-from lagrade.bulk.assignment import load_assignment
-from lagrade.bulk.runner import grade_folder
+from lagrade.uses.bulk.assignment import load_assignment
+from lagrade.uses.bulk.runner import grade_folder
 from lagrade.cli.bulk import grade
 
 distributed = pytest.importorskip("distributed", reason="the dask extra is not installed (pip install lagrade[dask])")
@@ -29,7 +29,7 @@ def test_dask_local_cluster(tmp_path, sentinel):
         # a second run on the cluster grades nothing
         with distributed.Client(cluster) as client:
             assert grade_folder(root, load_assignment(hw), db, scheduler=client).todo == 0
-            from lagrade.bulk.runner import dask_stop
+            from lagrade.uses.bulk.runner import dask_stop
 
             client.run(dask_stop)
     # the local pool agrees part by part

@@ -15,8 +15,8 @@ from hypothesis import strategies as st
 from sympy.core.function import AppliedUndef
 from sympy.printing.mathml import mathml
 
-from lagrade.bulk import display
-from lagrade.bulk.display import MATHML_MAX_CHARS, show
+from lagrade.uses.bulk import display
+from lagrade.uses.bulk.display import MATHML_MAX_CHARS, show
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from expression_strategies import expressions  # noqa: E402
@@ -153,7 +153,7 @@ def test_the_same_text_is_rendered_once():
 def test_a_value_equal_to_one_shown_before_gets_its_own_text(expr):
     """The text is kept by the value: an equal value built anew (as the next file's is) must print
     as str() prints it, whatever was shown before."""
-    from lagrade.jail.rebuild import rebuild_srepr
+    from lagrade.answer.jail.rebuild import rebuild_srepr
 
     huge = [f for f in expr.atoms(sp.Float) if f != 0 and not 1e-300 < abs(f) < 1e300]
     assume(not huge)

@@ -17,7 +17,7 @@ import classgen
 import pytest
 from click.testing import CliRunner
 
-from lagrade.bulk.exports import FORMULA_STARTS, spreadsheet_safe
+from lagrade.uses.bulk.exports import FORMULA_STARTS, spreadsheet_safe
 from lagrade.cli.bulk import export, grade, report
 
 REPO = classgen.REPO

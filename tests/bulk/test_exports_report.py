@@ -12,8 +12,8 @@ import classgen
 import pytest
 from click.testing import CliRunner
 
-from lagrade.bulk.assignment import AssignmentError, parse_assignment, points
-from lagrade.bulk.html_report import slug
+from lagrade.uses.bulk.assignment import AssignmentError, parse_assignment, points
+from lagrade.uses.bulk.html_report import slug
 from lagrade.cli.bulk import export, grade, gradescope, report
 
 REPO = classgen.REPO

@@ -3,9 +3,9 @@ but counts in a student's points only when the assignment's `parts` names it."""
 
 from __future__ import annotations
 
-from lagrade.bulk.assignment import load_assignment
-from lagrade.bulk.gradebook import load_gradebook
-from lagrade.bulk.runner import grade_folder
+from lagrade.uses.bulk.assignment import load_assignment
+from lagrade.uses.bulk.gradebook import load_gradebook
+from lagrade.uses.bulk.runner import grade_folder
 
 #: 12.36's book question (H and Hamilton's equations with a general V(x)); H_F, hamilton_F not given
 ANSWER = """\

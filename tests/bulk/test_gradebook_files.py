@@ -15,7 +15,7 @@ import classgen
 import pytest
 from click.testing import CliRunner
 
-from lagrade.bulk.store import Key, Store
+from lagrade.uses.bulk.store import Key, Store
 from lagrade.cli.bulk import export, grade, report
 
 REPO = classgen.REPO

@@ -9,7 +9,7 @@ import sys
 import time
 from pathlib import Path
 
-from lagrade.bulk.worker import (
+from lagrade.uses.bulk.worker import (
     _ORPHAN,
     SYMPY_CACHE_ENTRIES,
     GraderProcess,
@@ -18,7 +18,7 @@ from lagrade.bulk.worker import (
     remove_orphaned_folders,
     stop_all,
 )
-from lagrade.library import problem_path, reference_dir
+from lagrade.problem.library import problem_path, reference_dir
 
 
 class _FakeProc:
@@ -177,8 +177,8 @@ def test_a_grader_gives_a_value_it_graded_before_the_verdict_it_got():
     """A class hands in the same values again and again (here the reference, in files of their own):
     the grader's memo gives each part the verdict and feedback it got, without grading it again. The
     warm-up's grading of the reference solution is the first entry."""
-    from lagrade.bulk.worker import Grader
-    from lagrade.library import load_problem
+    from lagrade.uses.bulk.worker import Grader
+    from lagrade.problem.library import load_problem
 
     grader = Grader({"12.14": problem_path("12.14").read_text()})
     try:

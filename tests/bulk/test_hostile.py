@@ -9,8 +9,8 @@ from pathlib import Path
 import classgen
 from classcheck import stored
 
-from lagrade.bulk.assignment import parse_assignment
-from lagrade.bulk.runner import grade_folder
+from lagrade.uses.bulk.assignment import parse_assignment
+from lagrade.uses.bulk.runner import grade_folder
 
 REPO = classgen.REPO
 

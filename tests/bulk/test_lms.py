@@ -13,11 +13,11 @@ import classgen
 import pytest
 from click.testing import CliRunner
 
-from lagrade.bulk.gradebook import load_gradebook
-from lagrade.bulk.intake import import_downloads, match_name
-from lagrade.bulk.layout import scan
-from lagrade.bulk.overrides import apply_overrides
-from lagrade.bulk.store import SCHEMA, Store
+from lagrade.uses.bulk.gradebook import load_gradebook
+from lagrade.uses.bulk.intake import import_downloads, match_name
+from lagrade.uses.bulk.layout import scan
+from lagrade.uses.bulk.overrides import apply_overrides
+from lagrade.uses.bulk.store import SCHEMA, Store
 from lagrade.cli.bulk import export, grade, import_, override, report
 
 REPO = classgen.REPO
@@ -257,7 +257,7 @@ def test_two_folders_for_one_roster_student_are_reported(graded):
     """``ada`` and ``101`` name the same Canvas student: the first folder counts, the second is said."""
     import dataclasses
 
-    from lagrade.bulk.exports import canvas_csv, not_on_roster, read_roster
+    from lagrade.uses.bulk.exports import canvas_csv, not_on_roster, read_roster
 
     tmp, db = graded
     book = load_gradebook(db)

@@ -14,9 +14,9 @@ from pathlib import Path
 import classgen
 from classcheck import assert_expected
 
-from lagrade.bulk.assignment import load_assignment
-from lagrade.bulk.runner import grade_folder
-from lagrade.bulk.worker import _ORPHAN
+from lagrade.uses.bulk.assignment import load_assignment
+from lagrade.uses.bulk.runner import grade_folder
+from lagrade.uses.bulk.worker import _ORPHAN
 
 GRADE = "import sys; from lagrade.cli.bulk import grade; grade(sys.argv[1:])"
 
@@ -124,7 +124,7 @@ def test_what_changes_is_regraded(tmp_path):
 
 
 def test_one_writer_at_a_time(tmp_path):
-    from lagrade.bulk.store import Store, StoreError
+    from lagrade.uses.bulk.store import Store, StoreError
 
     db = tmp_path / "x.sqlite"
     with Store(db, lock=True):
@@ -138,7 +138,7 @@ def test_one_writer_at_a_time(tmp_path):
 
 def test_python_answers_are_graded_before_text_answers_each_in_folder_order(tmp_path, monkeypatch):
     """Text answers are short: ending the queue on them keeps graders from waiting on one long file."""
-    import lagrade.bulk.runner as runner
+    import lagrade.uses.bulk.runner as runner
 
     root = tmp_path / "submissions"
     classgen.make_class(root, 12, problems=["12.43"], hostile=False, extras=False)

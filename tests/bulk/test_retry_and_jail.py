@@ -13,14 +13,14 @@ from pathlib import Path
 import classgen
 import pytest
 
-import lagrade.bulk.runner as runner
-from lagrade.bulk import exports
-from lagrade.bulk.assignment import load_assignment
-from lagrade.bulk.gradebook import load_gradebook
-from lagrade.bulk.html_report import write_report
-from lagrade.bulk.runner import grade_folder
-from lagrade.bulk.store import SCHEMA, Key, Store
-from lagrade.bulk.worker import GraderProcess, failed_result
+import lagrade.uses.bulk.runner as runner
+from lagrade.uses.bulk import exports
+from lagrade.uses.bulk.assignment import load_assignment
+from lagrade.uses.bulk.gradebook import load_gradebook
+from lagrade.uses.bulk.html_report import write_report
+from lagrade.uses.bulk.runner import grade_folder
+from lagrade.uses.bulk.store import SCHEMA, Key, Store
+from lagrade.uses.bulk.worker import GraderProcess, failed_result
 
 REPO = classgen.REPO
 MARK = b"# this file's grader is killed\n"
@@ -223,7 +223,7 @@ def test_a_file_that_hits_a_bound_is_final_with_its_reason(tmp_path):
 def test_a_grading_past_the_hard_deadline_is_final(tmp_path, monkeypatch):
     """A grader stuck past every bound (a power bomb built while holding the GIL) is killed and the
     file recorded as `timeout` with the reason: not retried at that cost on the next run."""
-    from lagrade.bulk import worker
+    from lagrade.uses.bulk import worker
 
     root, hw, db = _class(tmp_path)
     # a 1000-term Hamiltonian: its comparison costs far more than the bound (verdicts of the reference's

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.deploy.jailcheck import exposed
+from lagrade.uses.deploy.jailcheck import exposed
 
 REPO = Path(__file__).resolve().parents[2]
 TRIPWIRES_OFF = REPO / "tests" / "security" / "tripwires_off"

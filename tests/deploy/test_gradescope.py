@@ -24,7 +24,7 @@ import pytest
 from click.testing import CliRunner
 
 from lagrade.cli.bulk import gradescope
-from lagrade.deploy.gradescope import install_fake_root
+from lagrade.uses.deploy.gradescope import install_fake_root
 
 REPO = Path(__file__).resolve().parents[2]
 SCHEMA = json.loads((Path(__file__).parent / "gradescope_results.schema.json").read_text())
@@ -99,7 +99,7 @@ def test_the_zip_holds_what_gradescope_runs(autograder):
         with zipfile.ZipFile(autograder) as z, zipfile.ZipFile(__import__("io").BytesIO(z.read(name))) as w:
             inside[name.split("-")[0]] = w.namelist()
     # the wheels are this checkout: the grader; the problems and the reference solutions apart
-    assert "lagrade/deploy/gradescope.py" in inside["lagrade"]
+    assert "lagrade/uses/deploy/gradescope.py" in inside["lagrade"]
     assert not [n for n in inside["lagrade"] if n.endswith(".toml") or "reference_solutions" in n]
     assert {"lagrade_chapter12/problems/12.43.toml", "lagrade_chapter12/reference_solutions/12.43/answer.py"} \
         <= set(inside["lagrade_chapter12"])
@@ -178,7 +178,7 @@ def test_the_schema_catches_what_gradescope_rejects():
 
 
 def test_max_scores_that_do_not_divide_still_sum_to_the_total():
-    from lagrade.bulk.assignment import split_points
+    from lagrade.uses.bulk.assignment import split_points
 
     for total, weights in [(10, [1, 1, 1]), (7, [1, 1, 1]), (1, [2, 3, 5, 7]), (9.5, [1] * 6), (0, [1, 2])]:
         shares = split_points(total, weights)
@@ -202,7 +202,7 @@ def test_setup_sh_installs_the_wheel_into_a_venv(autograder, tmp_path):
     # the reference cache is built, and the key is the grader's uid's alone (0700)
     assert list(cache.iterdir()), proc.stdout[-2000:]
     data = subprocess.run([str(root / "venv" / "bin" / "python"), "-c",
-                           "from lagrade.library import data_root; print(data_root())"],
+                           "from lagrade.problem.library import data_root; print(data_root())"],
                           env=env, capture_output=True, text=True).stdout.strip()
     for d in (Path(data), cache, root / "source"):
         assert stat.S_IMODE(d.stat().st_mode) == 0o700, d

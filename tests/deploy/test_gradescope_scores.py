@@ -11,9 +11,9 @@ from decimal import Decimal
 
 import pytest
 
-from lagrade.bulk.assignment import parse_assignment, part_points, points
-from lagrade.bulk.exports import canvas_csv, gradescope_results, plain_csv
-from lagrade.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
+from lagrade.uses.bulk.assignment import parse_assignment, part_points, points
+from lagrade.uses.bulk.exports import canvas_csv, gradescope_results, plain_csv
+from lagrade.uses.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
 
 #: weight 10 over 3 equal parts: 10/3 is no multiple of 1/10000
 HW = {"name": "hw", "problems": [{"id": "12.43", "weight": 10}, {"id": "12.3", "weight": 10}]}
@@ -93,7 +93,7 @@ def test_the_tests_are_the_same_whether_or_not_a_problem_was_handed_in():
 
 
 def test_the_answer_memory_bound_on_gradescope_is_below_its_container(tmp_path, monkeypatch):
-    from lagrade.bulk import runner
+    from lagrade.uses.bulk import runner
     from lagrade.cli import bulk
 
     seen = {}
@@ -103,8 +103,8 @@ def test_the_answer_memory_bound_on_gradescope_is_below_its_container(tmp_path, 
         raise SystemExit(0)
 
     monkeypatch.setattr(runner, "grade_folder", fake_grade_folder)
-    monkeypatch.setattr("lagrade.deploy.jailcheck.decide", lambda **kw: __import__(
-        "lagrade.deploy.jailcheck", fromlist=["JailVerdict"]).JailVerdict(["uid"], file_view="mount"))
+    monkeypatch.setattr("lagrade.uses.deploy.jailcheck.decide", lambda **kw: __import__(
+        "lagrade.uses.deploy.jailcheck", fromlist=["JailVerdict"]).JailVerdict(["uid"], file_view="mount"))
     (tmp_path / "hw.toml").write_text('name = "hw"\n[[problems]]\nid = "12.3"\n')
     with pytest.raises(SystemExit):
         bulk._gradescope_run(tmp_path, tmp_path / "hw.toml", tmp_path / "r.json", 1, ())

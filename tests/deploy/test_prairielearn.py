@@ -127,7 +127,7 @@ def test_an_image_prairielearn_cannot_pull_is_refused(tmp_path, image):
                                    "ghcr.io/physics-dept/lagrade:v1", "quay.io/org/img:tag",
                                    "registry.gitlab.com/group/project/img:t", "public.ecr.aws/alias/img:1"])
 def test_images_on_the_registries_prairielearn_pulls_from_are_taken(image):
-    from lagrade.deploy.prairielearn import check_image
+    from lagrade.uses.deploy.prairielearn import check_image
 
     assert check_image(image) == image
 
@@ -135,8 +135,8 @@ def test_images_on_the_registries_prairielearn_pulls_from_are_taken(image):
 def test_the_question_says_the_assumptions_and_symbols_and_offers_the_template(built):
     """Students on PrairieLearn have no ``lagrade show`` or ``lagrade template``: the page says what
     ``lagrade show`` says, and the template is a client file the page offers for download."""
-    from lagrade.describe import template_text
-    from lagrade.library import load_problem
+    from lagrade.problem.describe import template_text
+    from lagrade.problem.library import load_problem
 
     problem = load_problem("12.43")
     html = (_question(built) / "question.html").read_text()
@@ -198,7 +198,7 @@ def test_question_uuids_are_unique_per_build_and_kept_by_a_rebuild(built, tmp_pa
     assert first != second
     assert uuid.UUID(first).version == 4 and uuid.UUID(second).version == 4  # PrairieLearn asks for UUID v4
     assert build(tmp_path / "b") == second
-    from lagrade.deploy.prairielearn import question_files
+    from lagrade.uses.deploy.prairielearn import question_files
 
     def seeded(seed):
         return json.loads(question_files("12.43", image=IMAGE, uuid_seed=seed)["info.json"])["uuid"]

@@ -100,7 +100,7 @@ def _reference_answer() -> str:
     from_src = _lagrade_src().parent / "reference_solutions" / "12.22" / "answer.py"
     if from_src.is_file():
         return from_src.read_text()
-    from lagrade.library import reference_dir
+    from lagrade.problem.library import reference_dir
 
     return (reference_dir() / "12.22" / "answer.py").read_text()
 

@@ -16,8 +16,8 @@ pytest.importorskip("httpx")
 from fastapi.testclient import TestClient  # noqa: E402
 from serverkit import bearer, make_config  # noqa: E402  (helpers live in serverkit: a unique name)
 
-from lagrade.server.app import create_app  # noqa: E402
-from lagrade.server.tokens import INSTRUCTOR  # noqa: E402
+from lagrade.uses.server.app import create_app  # noqa: E402
+from lagrade.uses.server.tokens import INSTRUCTOR  # noqa: E402
 
 
 @pytest.fixture

@@ -16,8 +16,8 @@ pytest.importorskip("sqlalchemy")
 pytest.importorskip("httpx")
 
 
-from lagrade.server.config import ServerConfig
-from lagrade.server.tokens import issue
+from lagrade.uses.server.config import ServerConfig
+from lagrade.uses.server.tokens import issue
 
 REPO = Path(__file__).resolve().parents[2]
 GOLDEN = REPO / "tests" / "answers"
@@ -52,8 +52,8 @@ def make_config(tmp: Path, **kw) -> ServerConfig:
 def sign_in(app, client, student: str) -> str:
     """Sign a browser (a TestClient) in as ``student`` as a person does: the sign-in link's page, then
     its button (a POST with the page's login-CSRF token). Returns the session's CSRF token."""
-    from lagrade.server.state import SESSION_COOKIE
-    from lagrade.server.tokens import csrf_token
+    from lagrade.uses.server.state import SESSION_COOKIE
+    from lagrade.uses.server.tokens import csrf_token
 
     token = issue(app.state.server.secret, student)
     page = client.get("/login", params={"token": token})

@@ -9,8 +9,8 @@ import re
 from fastapi.testclient import TestClient
 from serverkit import bearer, make_config, sign_in
 
-from lagrade.server.app import create_app
-from lagrade.server.tokens import issue, student_of
+from lagrade.uses.server.app import create_app
+from lagrade.uses.server.tokens import issue, student_of
 
 ANSWER = {"answer": {"L": "m1*x_d^2/2"}}
 API = [("get", "/api/v1/problems", None), ("get", "/api/v1/problems/12.22", None),

@@ -3,7 +3,7 @@ served to the attempt's owner only, shown on the page; pixels only (no text chun
 true motion as text, no vector path).
 
 The answers here are values no other test of the session sends: the graders keep verdicts by value
-(lagrade.verdict_memo), and a verdict kept from before carries no motion to draw."""
+(lagrade.verdicts.verdict_memo), and a verdict kept from before carries no motion to draw."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from serverkit import PICTURE_CHUNKS, bearer, png_chunks, sign_in
 
-from lagrade.server.tokens import INSTRUCTOR
+from lagrade.uses.server.tokens import INSTRUCTOR
 
 pytestmark = pytest.mark.slow
 

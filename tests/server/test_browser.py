@@ -12,7 +12,7 @@ from urllib.parse import urlparse
 
 import pytest
 
-from lagrade.server.tokens import issue
+from lagrade.uses.server.tokens import issue
 
 pytestmark = pytest.mark.slow
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"

@@ -13,7 +13,7 @@ from click.testing import CliRunner
 from serverkit import GOLDEN, REPO, bearer, expectations, golden, sign_in, toml_answer
 
 from lagrade.cli import main
-from lagrade.server.tokens import INSTRUCTOR
+from lagrade.uses.server.tokens import INSTRUCTOR
 
 pytestmark = pytest.mark.slow
 
@@ -98,8 +98,8 @@ def test_the_response_is_what_a_local_check_prints(graded):
         return [{k: re.sub(r"\d+\.\d+ s\b", "_ s", v) if k == "feedback" else v for k, v in p.items() if k not in strip}
                 for p in parts]
 
-    # a student reads the evidence in words (lagrade.words); the instructor's view is --json's, whole
-    from lagrade.words import in_words
+    # a student reads the evidence in words (lagrade.verdicts.words); the instructor's view is --json's, whole
+    from lagrade.verdicts.words import in_words
 
     kinds = {p.name: p.kind for p in app.state.server.problems["12.22"].parts}
     worded = [{**p, "feedback": in_words(p["feedback"], kinds[p["part"]])} for p in mine["parts"]]

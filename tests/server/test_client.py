@@ -11,7 +11,7 @@ from click.testing import CliRunner
 from serverkit import GOLDEN, REPO
 
 from lagrade.cli import main
-from lagrade.server.tokens import issue
+from lagrade.uses.server.tokens import issue
 
 pytestmark = pytest.mark.slow
 
@@ -19,15 +19,15 @@ pytestmark = pytest.mark.slow
 @pytest.fixture
 def no_problem_data(monkeypatch):
     """Make every way to the problems and references fail: the client must not need them."""
-    import lagrade.grade
-    import lagrade.library
+    import lagrade.verdicts.grade
+    import lagrade.problem.library
 
     def refuse(*a, **k):
         raise AssertionError("the client touched problem data")
 
     for name in ("load_problem", "problem_dirs", "reference_dir", "problem_path", "problem_ids"):
-        monkeypatch.setattr(lagrade.library, name, refuse)
-    monkeypatch.setattr(lagrade.grade, "references", refuse)
+        monkeypatch.setattr(lagrade.problem.library, name, refuse)
+    monkeypatch.setattr(lagrade.verdicts.grade, "references", refuse)
 
 
 def _run(args):
@@ -89,7 +89,7 @@ def test_a_check_whose_answer_a_crash_cut_off_is_found_again(graded, live_url, m
     import http.client
     import urllib.request
 
-    import lagrade.server.client as client
+    import lagrade.uses.server.client as client
 
     app = graded[0]
     real, cut = urllib.request.urlopen, []

@@ -20,9 +20,9 @@ from pathlib import Path
 import pytest
 from serverkit import GOLDEN, REPO
 
-from lagrade.deploy.wheel import build_data_wheel, build_wheel
-from lagrade.library import load_problem
-from lagrade.server.tokens import issue
+from lagrade.uses.deploy.wheel import build_data_wheel, build_wheel
+from lagrade.problem.library import load_problem
+from lagrade.uses.server.tokens import issue
 
 pytestmark = pytest.mark.slow
 
@@ -86,7 +86,7 @@ def test_the_client_wheel_holds_no_problem_and_no_reference(wheels):
                                                                    for f in found)
     assert any(f.startswith("lagrade_chapter12/problems/12.14.toml: 12.14 ") for f in found)
     with zipfile.ZipFile(client) as z:
-        assert "lagrade/server/client.py" in z.namelist()  # the client is in it
+        assert "lagrade/uses/server/client.py" in z.namelist()  # the client is in it
 
 
 def _fresh_venv(root: Path, client: Path) -> Path:
@@ -114,7 +114,7 @@ def test_the_client_alone_checks_against_the_server(wheels, graded, live_url, tm
     bin_ = _fresh_venv(tmp_path / "venv", client)
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV", "LAGRADE_PROBLEMS")}
     env["PATH"] = f"{bin_}{os.pathsep}{env.get('PATH', '')}"
-    probe = "import lagrade, lagrade.library as l; print(lagrade.__file__); print(l.data_root()); print(l.problem_ids())"
+    probe = "import lagrade, lagrade.problem.library as l; print(lagrade.__file__); print(l.data_root()); print(l.problem_ids())"
     where = subprocess.run([str(bin_ / "python"), "-c", probe],
                            capture_output=True, text=True, env=env, cwd=tmp_path)
     assert where.returncode == 0, where.stderr

@@ -10,8 +10,8 @@ import pytest
 from fastapi.testclient import TestClient
 from serverkit import REPO, bearer, make_config
 
-from lagrade.server.app import create_app
-from lagrade.server.grading import GradingQueue
+from lagrade.uses.server.app import create_app
+from lagrade.uses.server.grading import GradingQueue
 
 LOOP = b"while True:\n    pass\n"
 

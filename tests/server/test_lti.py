@@ -19,10 +19,10 @@ import httpx  # noqa: E402
 from lti_platform import INSTRUCTOR, Platform, read_form, rsa_pem  # noqa: E402
 from serverkit import GOLDEN, make_config  # noqa: E402
 
-from lagrade.server.app import create_app  # noqa: E402
-from lagrade.server.lti import LtiConfigError, load_config, student_id  # noqa: E402
-from lagrade.server.state import SESSION_COOKIE, SESSION_SECONDS  # noqa: E402
-from lagrade.server.tokens import student_of  # noqa: E402
+from lagrade.uses.server.app import create_app  # noqa: E402
+from lagrade.uses.server.lti import LtiConfigError, load_config, student_id  # noqa: E402
+from lagrade.uses.server.state import SESSION_COOKIE, SESSION_SECONDS  # noqa: E402
+from lagrade.uses.server.tokens import student_of  # noqa: E402
 
 
 def _socket() -> socket.socket:
@@ -163,7 +163,7 @@ def test_a_new_grade_replaces_the_one_in_the_lms(lms):
 def test_a_grade_the_lms_could_not_take_is_sent_when_it_is_back(lms):
     from sqlalchemy import select
 
-    from lagrade.server.lti import lti_links
+    from lagrade.uses.server.lti import lti_links
 
     platform, tool_url, app = lms
     lti = app.state.lti

@@ -29,8 +29,8 @@ from serverkit import (
     toml_answer,
 )
 
-from lagrade.reading.load import load_answer
-from lagrade.library import load_problem
+from lagrade.answer.reading.load import load_answer
+from lagrade.problem.library import load_problem
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from leaks import reveals, squash

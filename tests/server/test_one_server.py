@@ -14,10 +14,10 @@ import pytest
 from fastapi.testclient import TestClient
 from serverkit import make_config
 
-from lagrade.server.app import create_app
-from lagrade.server.db import Database, DatabaseBusy
+from lagrade.uses.server.app import create_app
+from lagrade.uses.server.db import Database, DatabaseBusy
 
-HOLD = "import sys, time; from lagrade.server.db import Database; Database(sys.argv[1]).claim(); print('held', flush=True); time.sleep(600)"
+HOLD = "import sys, time; from lagrade.uses.server.db import Database; Database(sys.argv[1]).claim(); print('held', flush=True); time.sleep(600)"
 
 
 @pytest.fixture

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.server.tokens import INSTRUCTOR, issue
+from lagrade.uses.server.tokens import INSTRUCTOR, issue
 
 pytestmark = pytest.mark.slow
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"

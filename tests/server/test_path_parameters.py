@@ -29,7 +29,7 @@ def test_the_largest_id_is_just_not_found(quiet_app):
 @pytest.mark.parametrize("page", ["%00", "a" * 5000, "../../etc/passwd"])
 def test_a_class_page_that_cannot_exist(quiet_app, instructor, page, monkeypatch):
     """A NUL byte, or a name longer than the file system takes, was a 500 (ValueError, OSError)."""
-    from lagrade.bulk import html_report
+    from lagrade.uses.bulk import html_report
 
     monkeypatch.setattr(html_report, "write_report", lambda book, folder: (folder / "index.html").write_text("ok"))
     app, client = quiet_app

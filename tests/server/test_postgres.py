@@ -9,7 +9,7 @@ import pytest
 from fastapi.testclient import TestClient
 from serverkit import GOLDEN, bearer, make_config, sign_in, toml_answer
 
-from lagrade.server.app import create_app
+from lagrade.uses.server.app import create_app
 
 URL = os.environ.get("LAGRADE_TEST_POSTGRES_URL")
 pytestmark = pytest.mark.skipif(not URL, reason="LAGRADE_TEST_POSTGRES_URL is not set")
@@ -19,7 +19,7 @@ pytestmark = pytest.mark.skipif(not URL, reason="LAGRADE_TEST_POSTGRES_URL is no
 def pg_url():
     from sqlalchemy import create_engine
 
-    from lagrade.server.db import metadata
+    from lagrade.uses.server.db import metadata
 
     engine = create_engine(URL)
     metadata.drop_all(engine)  # a clean database for each test
@@ -56,7 +56,7 @@ def test_graded_into_the_gradebook(tmp_path, pg_url):
         assert alice.submitted and 0 < alice.points < alice.possible
         assert {p["part"]: p["verdict"] for p in alice.parts} == verdicts
         page = type(client)(app)
-        from lagrade.server.tokens import INSTRUCTOR
+        from lagrade.uses.server.tokens import INSTRUCTOR
 
         sign_in(app, page, INSTRUCTOR)
         assert "alice" in page.get("/class/").text
@@ -67,8 +67,8 @@ def test_a_session_opens_and_sign_out_revokes_it(tmp_path, pg_url):
     cookie), reads its page, signs out; the row is gone and a copy of the cookie signs nobody in."""
     import re
 
-    from lagrade.server.state import SESSION_COOKIE, SESSION_SECONDS
-    from lagrade.server.tokens import student_of
+    from lagrade.uses.server.state import SESSION_COOKIE, SESSION_SECONDS
+    from lagrade.uses.server.tokens import student_of
 
     app = create_app(make_config(tmp_path, db=pg_url), grade=False)
     db = app.state.server.db

@@ -1,4 +1,4 @@
-"""Where lagrade finds the bundled problems and references (lagrade.library.data_root): the checkout
+"""Where lagrade finds the bundled problems and references (lagrade.problem.library.data_root): the checkout
 of an editable install, else an installed ``lagrade.problem_data`` package (lagrade-chapter12), else
 nowhere, and then a check says so in one line. The installed case is laid out here as pip lays out a
 wheel (a package folder and a dist-info with its entry point), so no install is needed."""
@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 from serverkit import REPO
 
-from lagrade import library
-from lagrade.spec import SpecError
+from lagrade.problem import library
+from lagrade.problem.spec import SpecError
 
 
 @pytest.fixture

@@ -9,8 +9,8 @@ import pytest
 from fastapi.testclient import TestClient
 from serverkit import PROBLEMS, bearer, make_config, sign_in
 
-from lagrade.server.app import create_app
-from lagrade.server.tokens import INSTRUCTOR
+from lagrade.uses.server.app import create_app
+from lagrade.uses.server.tokens import INSTRUCTOR
 
 #: an L off by a factor in its cross term: not a named mistake, so the graders' term hints name it
 HINTED_L = ("(m1 + m2)*l1^2*theta1_d^2/2 + m2*l2^2*theta2_d^2/2 + 2*m2*l1*l2*theta1_d*theta2_d*cos(theta1 - theta2)"

@@ -18,8 +18,8 @@ from click.testing import CliRunner
 from serverkit import ASSIGNMENT
 
 from lagrade.cli import main
-from lagrade.server.db import Database
-from lagrade.server.tokens import INSTRUCTOR, student_of
+from lagrade.uses.server.db import Database
+from lagrade.uses.server.tokens import INSTRUCTOR, student_of
 
 
 def test_tokens_for_a_roster(tmp_path):
@@ -71,7 +71,7 @@ def test_kill_9_loses_no_submission(tmp_path):
     proc = _start(tmp_path, port)
     try:
         secret = Database(str(tmp_path / "serve.sqlite")).secret()
-        from lagrade.server.tokens import issue
+        from lagrade.uses.server.tokens import issue
 
         h = {"Authorization": f"Bearer {issue(secret, 'ivan')}"}
         slow = b"x = 0\nwhile True:\n    x += 1\n"  # runs until its CPU limit: long enough to kill
@@ -138,7 +138,7 @@ def test_an_empty_or_foreign_database_file_is_refused_in_one_line(tmp_path, monk
     issued stopped working). An existing file that is not a server's database is refused, untouched."""
     import sqlite3
 
-    from lagrade.bulk.store import Store
+    from lagrade.uses.bulk.store import Store
 
     empty = tmp_path / "empty.sqlite"
     empty.write_bytes(b"")

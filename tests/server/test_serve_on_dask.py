@@ -6,7 +6,7 @@ import pytest
 from fastapi.testclient import TestClient
 from serverkit import GOLDEN, bearer, expectations, make_config
 
-from lagrade.server.app import create_app
+from lagrade.uses.server.app import create_app
 
 pytestmark = pytest.mark.slow
 distributed = pytest.importorskip("distributed", reason="the dask extra is not installed (pip install lagrade[dask])")
@@ -26,6 +26,6 @@ def test_graded_on_a_local_cluster(tmp_path):
                 assert app.state.server.db.counts() == {"graded": 1}
         finally:
             with distributed.Client(cluster) as c:
-                from lagrade.bulk.runner import dask_stop
+                from lagrade.uses.bulk.runner import dask_stop
 
                 c.run(dask_stop)

@@ -17,9 +17,9 @@ import pytest
 from fastapi.testclient import TestClient
 from serverkit import make_config, sign_in
 
-from lagrade.server.app import create_app
-from lagrade.server.state import SESSION_COOKIE
-from lagrade.server.tokens import csrf_token, issue, student_of
+from lagrade.uses.server.app import create_app
+from lagrade.uses.server.state import SESSION_COOKIE
+from lagrade.uses.server.tokens import csrf_token, issue, student_of
 
 ANSWER = {"answer": {"L": "m1*x_d^2/2"}}
 
@@ -166,7 +166,7 @@ def test_an_open_server_gives_each_browser_its_own_guest(tmp_path):
 def test_refused_tokens_are_counted_logged_and_slowed(tmp_path, caplog):
     app = create_app(make_config(tmp_path, failed_sign_ins_per_minute=1, failed_sign_in_burst=3), grade=False)
     server = app.state.server
-    with TestClient(app) as client, caplog.at_level(logging.WARNING, logger="lagrade.server"):
+    with TestClient(app) as client, caplog.at_level(logging.WARNING, logger="lagrade.uses.server"):
         assert client.get("/login", params={"token": "lg1.bad.bad"}).status_code == 401
         assert client.get("/api/v1/problems", headers={"Authorization": "Bearer lg1.x.y"}).status_code == 401
         page = client.get("/")
@@ -179,7 +179,7 @@ def test_refused_tokens_are_counted_logged_and_slowed(tmp_path, caplog):
         # a right token still signs in from elsewhere; this address waits
         assert client.get("/api/v1/problems", headers={"Authorization": "Bearer " + issue(server.secret, "a")}) \
             .status_code == 200
-    lines = [r.getMessage() for r in caplog.records if r.name == "lagrade.server"]
+    lines = [r.getMessage() for r in caplog.records if r.name == "lagrade.uses.server"]
     assert len(lines) == 4 and all("refused sign-in" in line and "testclient" in line for line in lines), lines
 
 

@@ -7,9 +7,9 @@ import pytest
 from click.testing import CliRunner
 from serverkit import png_chunks
 
-import lagrade.library
+import lagrade.problem.library
 from lagrade.cli import main
-from lagrade.server.tokens import issue
+from lagrade.uses.server.tokens import issue
 
 
 @pytest.fixture
@@ -18,7 +18,7 @@ def no_data(monkeypatch):
     def nothing(*args, **kwargs):
         raise AssertionError("the client read a problem file")
 
-    monkeypatch.setattr(lagrade.library, "load_problem", nothing)
+    monkeypatch.setattr(lagrade.problem.library, "load_problem", nothing)
 
 
 def test_show_and_template_read_the_problem_from_the_server(graded, live_url, no_data, tmp_path):
@@ -36,5 +36,5 @@ def test_show_and_template_read_the_problem_from_the_server(graded, live_url, no
 
 
 def test_no_data_tells_a_student_of_the_server_not_of_pip():
-    assert "pip install" not in lagrade.library.NO_DATA
-    assert "lagrade show ID --server URL --token T" in lagrade.library.NO_DATA
+    assert "pip install" not in lagrade.problem.library.NO_DATA
+    assert "lagrade show ID --server URL --token T" in lagrade.problem.library.NO_DATA

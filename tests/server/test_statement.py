@@ -7,9 +7,9 @@ import re
 
 from serverkit import PICTURE_CHUNKS, bearer, png_chunks, sign_in
 
-from lagrade.figure import draw
-from lagrade.library import load_problem
-from lagrade.statement import statement_html
+from lagrade.verdicts.figure import draw
+from lagrade.problem.library import load_problem
+from lagrade.uses.server.statement import statement_html
 
 
 def test_the_page_shows_the_statement_with_math_and_the_figure(quiet_app):

@@ -12,10 +12,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from serverkit import GOLDEN, bearer, make_config
 
-from lagrade.bulk.store import Store
-from lagrade.server.answers import to_toml
-from lagrade.server.app import create_app
-from lagrade.server.db import GRADEBOOK_TABLES, Database
+from lagrade.uses.bulk.store import Store
+from lagrade.uses.server.answers import to_toml
+from lagrade.uses.server.app import create_app
+from lagrade.uses.server.db import GRADEBOOK_TABLES, Database
 
 
 def _columns(con, table):
@@ -31,7 +31,7 @@ def test_gradebook_tables_are_the_bulk_schema(tmp_path):
     assert bulk == {t.name for t in GRADEBOOK_TABLES}
     from sqlalchemy import create_engine
 
-    from lagrade.server.db import metadata
+    from lagrade.uses.server.db import metadata
 
     engine = create_engine(f"sqlite:///{tmp_path / 'sa.sqlite'}")
     metadata.create_all(engine, tables=list(GRADEBOOK_TABLES))

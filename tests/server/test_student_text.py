@@ -8,7 +8,7 @@ import json
 
 import pytest
 
-from lagrade.server.grading import for_student
+from lagrade.uses.server.grading import for_student
 
 
 def test_grader_messages_are_rewritten_for_the_student():

@@ -104,7 +104,7 @@ def test_a_preview_that_never_ends_is_cut_off_and_the_server_keeps_answering(tmp
     from fastapi.testclient import TestClient
     from serverkit import make_config
 
-    from lagrade.server.app import create_app
+    from lagrade.uses.server.app import create_app
 
     app = create_app(make_config(tmp_path, preview_seconds=3), grade=False)
     with TestClient(app) as client:

@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from lagrade.library import load_problem
-from lagrade.scene_model import SceneModel
-from lagrade.reference import Mechanics
-from lagrade.spec import Problem
+from lagrade.problem.library import load_problem
+from lagrade.compare.scene_model import SceneModel
+from lagrade.derive.reference import Mechanics
+from lagrade.problem.spec import Problem
 
 
 def mechanics(pid: str, key: str | None = None) -> Mechanics:

@@ -17,7 +17,7 @@ import pytest
 import sympy as sp
 
 from lagrade.compare.trajectory import ACCURACY, compare_runs
-from lagrade.research.lyapunov import comparison_window, finite_time_lyapunov
+from lagrade.uses.research.lyapunov import comparison_window, finite_time_lyapunov
 
 from .helpers import mechanics, params, reference_rates, rewritten_rates
 

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from lagrade.compare.trajectory import ACCURACY, integrate
-from lagrade.scene_model import SceneModel
+from lagrade.compare.scene_model import SceneModel
 
 from .helpers import custom, mechanics, params
 

@@ -13,8 +13,8 @@ import pytest
 import sympy as sp
 
 import lagrade
-from lagrade.grade import references
-from lagrade.library import load_problem, problem_ids
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem, problem_ids
 
 PRESETS = ("fast", "default", "strict")
 

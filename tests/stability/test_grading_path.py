@@ -30,7 +30,7 @@ from scipy.special import ellipj, ellipk
 
 from lagrade.compare import dop853
 from lagrade.compare.trajectory import ACCURACY, integrate
-from lagrade.scene_model import SceneModel, scene_model
+from lagrade.compare.scene_model import SceneModel, scene_model
 
 from .helpers import custom, mechanics, params
 

@@ -16,8 +16,8 @@ import pytest
 from scipy.special import ellipk
 
 from lagrade.compare.trajectory import ACCURACY, integrate
-from lagrade.scene_model import SceneModel
-from lagrade.research.symplectic import StormerVerlet
+from lagrade.compare.scene_model import SceneModel
+from lagrade.uses.research.symplectic import StormerVerlet
 
 from .helpers import mechanics, params
 

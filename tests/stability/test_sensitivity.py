@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import pytest
 
-from lagrade.grade import references
-from lagrade.library import load_problem, problem_ids
-from lagrade.research.sensitivity import KINDS, reference_rows, rejected
+from lagrade.verdicts.grade import references
+from lagrade.problem.library import load_problem, problem_ids
+from lagrade.uses.research.sensitivity import KINDS, reference_rows, rejected
 
 #: the error every part must reject, per preset (docs/numerics.md: measured 1e-5 ... 1e-9)
 RESOLUTION = {"fast": 1e-5, "default": 1e-6, "strict": 1e-8}

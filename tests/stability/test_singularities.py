@@ -13,11 +13,11 @@ import numpy as np
 import pytest
 
 from lagrade.compare.trajectory import ACCURACY, integrate
-from lagrade.library import load_problem, problem_ids
-from lagrade.numeric import compile_exprs
-from lagrade.reference import Mechanics
-from lagrade.sampling import rng_for, sample_points, state_arrays
-from lagrade.scene_model import scene_model
+from lagrade.problem.library import load_problem, problem_ids
+from lagrade.numbers.numeric import compile_exprs
+from lagrade.derive.reference import Mechanics
+from lagrade.compare.sampling import rng_for, sample_points, state_arrays
+from lagrade.compare.scene_model import scene_model
 
 from .helpers import mechanics, params, reference_rates
 

@@ -17,7 +17,7 @@ import pytest
 import sympy as sp
 
 from lagrade.compare.trajectory import ACCURACY, compare_runs, estimate_stiffness, integrate
-from lagrade.scene_model import scene_model
+from lagrade.compare.scene_model import scene_model
 
 from .helpers import mechanics, params, reference_rates, rewritten_rates
 
@@ -175,9 +175,9 @@ def test_no_chapter_scene_is_stiff_under_any_preset():
     """Reason: docs/numerics.md says the stiffness rule leaves every chapter scene to DOP853 over its whole
     horizon (so its change for conservative saddles changed no grading); this holds it, at the states the
     trajectory checks sample (`rng_for(id, system, "trajectory")`) and the problems' horizons."""
-    from lagrade.library import load_problem, problem_ids
-    from lagrade.reference import Mechanics
-    from lagrade.sampling import rng_for, sample_points, state_arrays
+    from lagrade.problem.library import load_problem, problem_ids
+    from lagrade.derive.reference import Mechanics
+    from lagrade.compare.sampling import rng_for, sample_points, state_arrays
 
     largest = (0.0, "")
     for pid in problem_ids():

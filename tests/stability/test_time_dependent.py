@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 from lagrade.compare.trajectory import ACCURACY, integrate
-from lagrade.library import load_problem
-from lagrade.scene_model import SceneModel
-from lagrade.sampling import rng_for, sample_points, state_arrays
+from lagrade.problem.library import load_problem
+from lagrade.compare.scene_model import SceneModel
+from lagrade.compare.sampling import rng_for, sample_points, state_arrays
 
 from .helpers import mechanics, reference_rates
 

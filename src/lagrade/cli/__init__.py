@@ -12,7 +12,7 @@ import click
 
 from lagrade._version import __version__
 from lagrade.cli import common
-from lagrade.process_env import single_threaded_blas
+from lagrade.numbers.process_env import single_threaded_blas
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})

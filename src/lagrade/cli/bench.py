@@ -44,7 +44,7 @@ def bench() -> None:
 def accuracy(ids: tuple[str, ...], out_dir: Path, methods: str, tolerances: str, K: int, repeat: int,
              markdown: bool, no_plot: bool) -> None:
     """Work-precision sweep of each scene IDS (default: 12.14 12.43); ID may be 12.8:b for a system."""
-    from lagrade.research import workprecision as wp
+    from lagrade.uses.research import workprecision as wp
 
     tols = _tolerances(tolerances)
     chosen = tuple(m.strip() for m in methods.split(",") if m.strip())
@@ -100,7 +100,7 @@ def _tolerances(text: str) -> tuple[float, ...]:
 @click.option("--repeat", default=3, show_default=True)
 def effects(ids: tuple[str, ...], repeat: int) -> None:
     """The machinery each scene compiles from its declared effects, and its cost against all machinery."""
-    from lagrade.research.effectsbench import compare_scene, format_rows
+    from lagrade.uses.research.effectsbench import compare_scene, format_rows
 
     rows = [compare_scene(pid, repeat=repeat) for pid in (ids or ("12.43", "12.14", "12.7", "12.4", "12.34"))]
     click.echo(format_rows(rows))

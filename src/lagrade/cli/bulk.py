@@ -34,7 +34,7 @@ def _gradebook_error(db: Path, exc: Exception, hint: str) -> GradebookError:
     """The one-line error for a gradebook that cannot be used; SQLite's own errors get the file named."""
     import sqlite3
 
-    from lagrade.bulk.store import NotAGradebook
+    from lagrade.uses.bulk.store import NotAGradebook
 
     if isinstance(exc, NotAGradebook):
         what = str(exc)
@@ -48,7 +48,7 @@ def _gradebook_error(db: Path, exc: Exception, hint: str) -> GradebookError:
 
 
 def _assignment(path: Path, problems_dir: tuple[Path, ...]):
-    from lagrade.bulk.assignment import (
+    from lagrade.uses.bulk.assignment import (
         AssignmentError,
         check_against_problems,
         load_assignment,
@@ -91,8 +91,8 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
 
     from rich.console import Console
 
-    from lagrade.bulk.runner import grade_folder
-    from lagrade.bulk.store import StoreError
+    from lagrade.uses.bulk.runner import grade_folder
+    from lagrade.uses.bulk.store import StoreError
 
     a = _assignment(assignment_path, problems_dir)
     db = db or assignment_path.with_suffix(".sqlite")
@@ -124,7 +124,7 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
     if len(report.skipped) > 20:
         out.print(f"  ... and {len(report.skipped) - 20} more (lagrade export {db} --format skipped)")
     if summary:
-        from lagrade.bulk.summary import render_summary
+        from lagrade.uses.bulk.summary import render_summary
 
         render_summary(_book(db), out)
 
@@ -133,8 +133,8 @@ def _keep_manifest(submissions: Path, db: Path) -> None:
     """What ``lagrade import`` learnt from the LMS (Canvas user id, late) goes into the gradebook."""
     import json
 
-    from lagrade.bulk.intake import read_manifest
-    from lagrade.bulk.store import Store
+    from lagrade.uses.bulk.intake import read_manifest
+    from lagrade.uses.bulk.store import Store
 
     lms = read_manifest(submissions)
     if lms:
@@ -144,8 +144,8 @@ def _keep_manifest(submissions: Path, db: Path) -> None:
 
 def _require_jail(unsafe: bool, err) -> None:
     """Refuse to run a class's files where the OS jail cannot be built, unless told they are trusted."""
-    from lagrade.deploy.jailcheck import probe_layers
-    from lagrade.jail import kernel
+    from lagrade.uses.deploy.jailcheck import probe_layers
+    from lagrade.answer.jail import kernel
 
     active, _, failed = probe_layers()
     lacking = failed or kernel.missing_minimum(active)
@@ -212,9 +212,9 @@ def _book(db: Path):
     stored assignment: whatever the file holds is not trusted)."""
     import sqlite3
 
-    from lagrade.bulk.gradebook import load_gradebook
-    from lagrade.bulk.overrides import apply_overrides
-    from lagrade.bulk.store import StoreError
+    from lagrade.uses.bulk.gradebook import load_gradebook
+    from lagrade.uses.bulk.overrides import apply_overrides
+    from lagrade.uses.bulk.store import StoreError
 
     try:
         book = load_gradebook(db)
@@ -243,7 +243,7 @@ def _book(db: Path):
 def export(db: Path, fmt: str, output: Path | None, student: str | None, roster: Path | None, missing: str,
            bom: bool) -> None:
     """Export the grades in DB: Canvas import CSV, plain CSV, Gradescope results.json, HTML report."""
-    from lagrade.bulk import exports
+    from lagrade.uses.bulk import exports
 
     book = _book(db)
     if bom and fmt not in ("canvas", "csv", "skipped"):
@@ -251,7 +251,7 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
     if fmt == "html":
         if output is None:
             raise click.UsageError("--format html writes a folder: give it with --output")
-        from lagrade.bulk.html_report import write_report
+        from lagrade.uses.bulk.html_report import write_report
 
         click.echo(str(write_report(book, output)))
         return
@@ -293,7 +293,7 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
 
 
 def _roster(path: Path) -> dict[str, dict[str, str]]:
-    from lagrade.bulk import exports
+    from lagrade.uses.bulk import exports
 
     try:
         return exports.read_roster(path)
@@ -317,8 +317,8 @@ def override(db: Path, student: str, problem: str, part: str, score: float | Non
     assignment's weights turn it into points as they do the engine's."""
     import sqlite3
 
-    from lagrade.bulk.overrides import part_of
-    from lagrade.bulk.store import Store, StoreError
+    from lagrade.uses.bulk.overrides import part_of
+    from lagrade.uses.bulk.store import Store, StoreError
 
     book = _book(db)
     try:
@@ -362,7 +362,7 @@ def import_(download: Path, assignment_path: Path, output: Path, roster: Path | 
     Files named nearly right (12_22.py, 12.22 (1).py, 12.22.PY, hw7-12.22.py) are taken and listed;
     files that match no problem are listed too. A download from which nothing can be imported is
     refused (exit 2)."""
-    from lagrade.bulk.intake import _unzip, import_downloads
+    from lagrade.uses.bulk.intake import _unzip, import_downloads
 
     a = _assignment(assignment_path, problems_dir)
     rows = _roster(roster) if roster else None
@@ -399,12 +399,12 @@ def report(db: Path, html_dir: Path | None) -> None:
     """The class summary of DB; with --html, a static report folder to open in a browser."""
     from rich.console import Console
 
-    from lagrade.bulk.summary import render_summary
+    from lagrade.uses.bulk.summary import render_summary
 
     book = _book(db)
     render_summary(book, Console(highlight=False))
     if html_dir is not None:
-        from lagrade.bulk.html_report import write_report
+        from lagrade.uses.bulk.html_report import write_report
 
         index = write_report(book, html_dir)
         click.echo(f"report: {index}")
@@ -458,9 +458,9 @@ def gradescope_run(submission: Path, assignment_path: Path, results: Path, worke
 @problems_option
 def gradescope_build(assignment_path: Path, output: Path, wheel: Path | None, problems_dir: tuple[Path, ...]) -> None:
     """Write the autograder zip for ASSIGNMENT: setup.sh, run_autograder, a lagrade wheel, the assignment."""
-    from lagrade.bulk.assignment import AssignmentError
-    from lagrade.deploy.gradescope import build_autograder
-    from lagrade.deploy.wheel import DeployError
+    from lagrade.uses.bulk.assignment import AssignmentError
+    from lagrade.uses.deploy.gradescope import build_autograder
+    from lagrade.uses.deploy.wheel import DeployError
 
     try:
         names = build_autograder(assignment_path, output, problems_dir, wheel)
@@ -481,12 +481,12 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
     import json
     import time
 
-    from lagrade.bulk.exports import gradescope_results
-    from lagrade.bulk.gradebook import load_gradebook
-    from lagrade.bulk.intake import find_answers
-    from lagrade.bulk.runner import grade_folder
+    from lagrade.uses.bulk.exports import gradescope_results
+    from lagrade.uses.bulk.gradebook import load_gradebook
+    from lagrade.uses.bulk.intake import find_answers
+    from lagrade.uses.bulk.runner import grade_folder
 
-    from lagrade.deploy.jailcheck import decide
+    from lagrade.uses.deploy.jailcheck import decide
 
     t0 = time.monotonic()
     a = _assignment(assignment_path, problems_dir)
@@ -521,7 +521,7 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
                                  problems_dirs=problems_dir)
         out["extra_data"] = {**out.get("extra_data", {}), "jail": jail.as_dict()}
         if notes:
-            from lagrade.bulk.exports import say
+            from lagrade.uses.bulk.exports import say
 
             sep = "<br>" if out["output_format"] == "html" else "\n\n" if out["output_format"] == "md" else "\n"
             out["output"] += sep + sep.join(say(n, out["output_format"]) for n in notes)
@@ -542,7 +542,7 @@ def prairielearn() -> None:
               help="The job: data/data.json and student/ in, results/results.json out.")
 def prairielearn_grade(root: Path) -> None:
     """Grade one PrairieLearn job (the container's entry point runs this)."""
-    from lagrade.deploy.prairielearn import write_results
+    from lagrade.uses.deploy.prairielearn import write_results
 
     results = write_results(root)
     click.echo(f"gradable {results['gradable']}, score {results.get('score', 0):g} -> {root / 'results' / 'results.json'}")
@@ -568,9 +568,9 @@ def prairielearn_build(assignment: Path | None, image: str, output: Path, proble
                        wheel: Path | None, problems_dir: tuple[Path, ...]) -> None:
     """Write the grader's Dockerfile, the lagrade wheels, the entry script and an example question (with an
     ASSIGNMENT file, like `gradescope build hw7.toml`: a question for each of its problems)."""
-    from lagrade.deploy.prairielearn import BuildError, build_grader, write_question
-    from lagrade.deploy.wheel import DeployError
-    from lagrade.spec import SpecError
+    from lagrade.uses.deploy.prairielearn import BuildError, build_grader, write_question
+    from lagrade.uses.deploy.wheel import DeployError
+    from lagrade.problem.spec import SpecError
 
     pids = [problem] if problem else [p.id for p in _assignment(assignment, problems_dir).problems] if assignment \
         else ["12.43"]

@@ -1,4 +1,4 @@
-"""``lagrade cache``: the reference derivations kept on disk (:mod:`lagrade.cache`).
+"""``lagrade cache``: the reference derivations kept on disk (:mod:`lagrade.derive.cache`).
 
 - ``lagrade cache build [IDS...]``: derive, compile and integrate every reference of each problem ahead
   of time, by grading its bundled reference solution (or, without one, by deriving the scenes), so
@@ -29,11 +29,11 @@ def cache() -> None:
 @problems_option
 def build(ids: tuple[str, ...], problems_dir: tuple[Path, ...]) -> None:
     """Build the entries of IDS (default: every problem)."""
-    from lagrade import cache as store
-    from lagrade.reading.load import load_answer
-    from lagrade.grade import grade_values, keep_references, references
-    from lagrade.library import load_problem, problem_ids, reference_dir
-    from lagrade.spec import SpecError
+    from lagrade.derive import cache as store
+    from lagrade.answer.reading.load import load_answer
+    from lagrade.verdicts.grade import grade_values, keep_references, references
+    from lagrade.problem.library import load_problem, problem_ids, reference_dir
+    from lagrade.problem.spec import SpecError
 
     if store.cache_dir() is None:
         raise click.UsageError("the cache is off (LAGRADE_CACHE=off)")
@@ -81,7 +81,7 @@ def _compile_bytecode() -> None:
 @cache.command()
 def info() -> None:
     """Where the cache is, how many entries it holds and their size."""
-    from lagrade import cache as store
+    from lagrade.derive import cache as store
 
     directory = store.cache_dir()
     if directory is None:
@@ -100,6 +100,6 @@ def info() -> None:
 @cache.command()
 def clear() -> None:
     """Remove every entry."""
-    from lagrade import cache as store
+    from lagrade.derive import cache as store
 
     click.echo(f"removed {store.clear()} entries")

@@ -1,4 +1,4 @@
-"""``lagrade check``: one answer file, graded by the library's one entry (:func:`lagrade.grade.check`,
+"""``lagrade check``: one answer file, graded by the library's one entry (:func:`lagrade.verdicts.grade.check`,
 which stages the start for speed), shown, and the exit code.
 
 Exit codes: 0 every part correct, 1 graded but not full marks, 2 the answer file or the arguments
@@ -44,14 +44,14 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
         leave(check_on_server(server, token, problem_id, answer, as_json))
     if not answer.is_file():
         fail(f"{answer}: no such answer file", as_json)
-    from lagrade.credit import load_credit
+    from lagrade.verdicts.credit import load_credit
 
     try:
         credit = load_credit(credit_file) if credit_file else None
     except (ValueError, OSError) as exc:
         fail(f"{credit_file}: {exc}", as_json)
-    from lagrade import grade
-    from lagrade.spec import SpecError
+    from lagrade.verdicts import grade
+    from lagrade.problem.spec import SpecError
 
     try:
         result = grade.check(problem_id, answer, problem_dirs=problems_dir, accuracy=accuracy, only=list(only) or None,
@@ -60,7 +60,7 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     except (SpecError, grade.UnknownPartError) as exc:  # a scene error: the problem file's line
         fail(str(exc), as_json)
     if plot_file is not None:
-        from lagrade.plot import plot_result
+        from lagrade.verdicts.plot import plot_result
 
         drawn = plot_result(result, plot_file)
         if not as_json:
@@ -70,15 +70,15 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     else:
         from rich.console import Console
 
-        from lagrade.library import load_problem
-        from lagrade.result import render
-        from lagrade.words import in_words
+        from lagrade.problem.library import load_problem
+        from lagrade.verdicts.result import render
+        from lagrade.verdicts.words import in_words
 
         kinds = {p.name: p.kind for p in load_problem(problem_id, problems_dir).parts}
         for p in result.parts:  # the evidence in words; its settings stay in --json
             p.feedback = in_words(p.feedback, kinds.get(p.part, ""))
         render(result, Console(highlight=False))
-    from lagrade.library import load_problem
+    from lagrade.problem.library import load_problem
 
     grade.keep_references(load_problem(problem_id, problems_dir))  # after the output: the next check starts warm
     leave(2 if grade.unusable(result) else (0 if result.full_marks else 1))

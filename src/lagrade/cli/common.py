@@ -10,7 +10,7 @@ from typing import NoReturn
 
 import click
 
-from lagrade.spec import Problem, SpecError
+from lagrade.problem.spec import Problem, SpecError
 
 problems_option = click.option("--problems", "problems_dir", multiple=True, type=click.Path(path_type=Path),
                                help="Extra folder of problem files (also LAGRADE_PROBLEMS).")
@@ -21,7 +21,7 @@ OWN_PROCESS = False
 
 
 def problem_or_usage_error(pid: str, problems_dir: tuple[Path, ...]) -> Problem:
-    from lagrade.library import load_problem
+    from lagrade.problem.library import load_problem
 
     try:
         return load_problem(pid, problems_dir)

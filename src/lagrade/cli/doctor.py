@@ -43,8 +43,8 @@ L = 0
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 def doctor(as_json: bool) -> None:
     """Which layers of the answer jail are active on this machine, and a probe that they hold."""
-    from lagrade.jail import kernel, zygote
-    from lagrade.library import reference_dir
+    from lagrade.answer.jail import kernel, zygote
+    from lagrade.problem.library import reference_dir
 
     if not sys.platform.startswith("linux"):
         message = (f"{platform.system()}: there is no OS jail here (the layers are Linux kernel features); "
@@ -88,7 +88,7 @@ def doctor(as_json: bool) -> None:
 
 def _run_probe(reference: str) -> dict:
     """Run the probe answer in the jail, with the tripwires off (it is lagrade's own code)."""
-    from lagrade.jail import sandbox
+    from lagrade.answer.jail import sandbox
 
     source = _PROBE.replace("REFERENCE", repr(reference)).replace("GRADER", str(os.getpid()))
     with tempfile.TemporaryDirectory() as tmp:

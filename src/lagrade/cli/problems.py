@@ -8,7 +8,7 @@ from pathlib import Path
 import click
 
 from lagrade.cli.common import problem_or_usage_error, problems_option
-from lagrade.spec import SpecError
+from lagrade.problem.spec import SpecError
 
 
 @click.command("list")
@@ -16,7 +16,7 @@ from lagrade.spec import SpecError
 @problems_option
 def list_cmd(as_json: bool, problems_dir: tuple[Path, ...]) -> None:
     """Every problem and exercise, with its title and number of parts."""
-    from lagrade.library import load_problem, problem_ids
+    from lagrade.problem.library import load_problem, problem_ids
 
     rows = []
     for pid in problem_ids(problems_dir):
@@ -27,7 +27,7 @@ def list_cmd(as_json: bool, problems_dir: tuple[Path, ...]) -> None:
         except SpecError as exc:
             rows.append({"id": pid, "title": f"(broken problem file: {exc})", "parts": 0, "names": []})
     if not rows:  # a student's client, or a course's folder not found: say so, not nothing
-        from lagrade.library import NO_DATA
+        from lagrade.problem.library import NO_DATA
 
         click.echo(f"lagrade: {NO_DATA}", err=True)
     if as_json:
@@ -43,7 +43,7 @@ token_option = click.option("--token", envvar="LAGRADE_TOKEN", help="Your token 
 
 
 def _from_server(server: str, token: str | None, problem_id: str, key: str) -> str:
-    from lagrade.server.client import ClientError, remote_problem
+    from lagrade.uses.server.client import ClientError, remote_problem
 
     try:
         return remote_problem(server, token, problem_id)[key]
@@ -65,7 +65,7 @@ def show(problem_id: str | None, schema: str | None, figure_file: Path | None, s
          token: str | None, problems_dir: tuple[Path, ...]) -> None:
     """Statement, assumptions, symbols to use and the parts asked."""
     if schema:
-        from lagrade.spec import Problem, markdown_tables
+        from lagrade.problem.spec import Problem, markdown_tables
 
         click.echo(json.dumps(Problem.model_json_schema(), indent=1) if schema == "json" else markdown_tables())
         return
@@ -74,7 +74,7 @@ def show(problem_id: str | None, schema: str | None, figure_file: Path | None, s
     if server:  # the course server has the problem: nothing of it is needed here
         click.echo(_from_server(server, token, problem_id, "show"), nl=False)
         if figure_file is not None:
-            from lagrade.server.client import ClientError, remote_figure
+            from lagrade.uses.server.client import ClientError, remote_figure
 
             try:
                 figure_file.write_bytes(remote_figure(server, token, problem_id))
@@ -82,12 +82,12 @@ def show(problem_id: str | None, schema: str | None, figure_file: Path | None, s
                 raise click.ClickException(str(exc)) from None
             click.echo(f"figure: {figure_file}", err=True)
         return
-    from lagrade.describe import show_text
+    from lagrade.problem.describe import show_text
 
     problem = problem_or_usage_error(problem_id, problems_dir)
     click.echo(show_text(problem))
     if figure_file is not None:
-        from lagrade.figure import draw
+        from lagrade.verdicts.figure import draw
 
         figure_file.write_bytes(draw(problem))
         click.echo(f"figure: {figure_file}", err=True)
@@ -103,6 +103,6 @@ def template(problem_id: str, server: str | None, token: str | None, problems_di
     if server:
         click.echo(_from_server(server, token, problem_id, "template"), nl=False)
         return
-    from lagrade.describe import template_text
+    from lagrade.problem.describe import template_text
 
     click.echo(template_text(problem_or_usage_error(problem_id, problems_dir)), nl=False)

@@ -27,7 +27,7 @@ def _need_server_extra() -> None:
 def _roster(path: Path | None) -> tuple[str, ...] | None:
     if path is None:
         return None
-    from lagrade.server.tokens import RosterError, read_roster
+    from lagrade.uses.server.tokens import RosterError, read_roster
 
     try:
         return read_roster(path)
@@ -71,10 +71,10 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     from rich.console import Console
 
     from lagrade.cli.bulk import _require_jail
-    from lagrade.server.app import create_app
-    from lagrade.server.config import ServerConfig
-    from lagrade.server.db import NotAServerDatabase, masked
-    from lagrade.server.tokens import INSTRUCTOR, issue
+    from lagrade.uses.server.app import create_app
+    from lagrade.uses.server.config import ServerConfig
+    from lagrade.uses.server.db import NotAServerDatabase, masked
+    from lagrade.uses.server.tokens import INSTRUCTOR, issue
 
     err = Console(stderr=True, highlight=False)
     if (ssl_certfile is None) != (ssl_keyfile is None):
@@ -126,7 +126,7 @@ def plain_http_warning(host: str, tls: bool, https: bool) -> str | None:
 
 def banner(db: str, students: int, open_: bool) -> str:
     """The start banner's first line (the database's password masked)."""
-    from lagrade.server.db import shown
+    from lagrade.uses.server.db import shown
 
     return (f"lagrade serve: {students} students on the roster, "
             f"{'open (no tokens)' if open_ else 'tokens required'}, database {shown(db)}")
@@ -134,7 +134,7 @@ def banner(db: str, students: int, open_: bool) -> str:
 
 def _cannot_use(db: str, exc: Exception) -> str:
     """One line: the database cannot be used, and why (its password masked, in the URL and the error)."""
-    from lagrade.server.db import masked, shown
+    from lagrade.uses.server.db import masked, shown
 
     why = masked(" ".join(str(exc).split()), db)[:300]
     return f"{shown(db)}: cannot be used as the server's database ({type(exc).__name__}: {why})"
@@ -147,8 +147,8 @@ def _cannot_use(db: str, exc: Exception) -> str:
 def tokens(roster: Path, db: str, url: str | None) -> None:
     """One token per student of ROSTER (CSV on stdout: student,token[,link]); the last row is the instructor's."""
     _need_server_extra()
-    from lagrade.server.db import Database, NotAServerDatabase
-    from lagrade.server.tokens import INSTRUCTOR, issue
+    from lagrade.uses.server.db import Database, NotAServerDatabase
+    from lagrade.uses.server.tokens import INSTRUCTOR, issue
 
     names = _roster(roster)
     try:
@@ -172,7 +172,7 @@ def check_on_server(server: str, token: str | None, problem_id: str, answer: Pat
     """The body of ``lagrade check --server``: the exit code of a local check (0, 1, or 2)."""
     import json
 
-    from lagrade.server.client import ClientError, remote_check, result_of
+    from lagrade.uses.server.client import ClientError, remote_check, result_of
 
     ctx = click.get_current_context(silent=True)
     params = ctx.params if ctx is not None else {}
@@ -198,7 +198,7 @@ def check_on_server(server: str, token: str | None, problem_id: str, answer: Pat
     else:
         from rich.console import Console
 
-        from lagrade.result import render
+        from lagrade.verdicts.result import render
 
         render(result, Console(highlight=False))
         rules = out.get("rules") or {}

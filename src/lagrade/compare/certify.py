@@ -209,7 +209,7 @@ def _derived(mech) -> set[sp.Symbol]:
 
 def _inputs(mech, phase: bool) -> set[sp.Symbol]:
     """The state the truth is computed from: (q, q', t, parameters), or (q, p, t, parameters)."""
-    from lagrade.symbols import T
+    from lagrade.problem.symbols import T
 
     return {*mech.s.q, *(mech.s.p if phase else mech.s.qd), T, *mech.params}
 

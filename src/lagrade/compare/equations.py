@@ -16,7 +16,7 @@ from functools import cached_property
 import numpy as np
 import sympy as sp
 
-from lagrade.numeric import Vectorized, compile_exprs, compile_linear_solve, evaluate
+from lagrade.numbers.numeric import Vectorized, compile_exprs, compile_linear_solve, evaluate
 
 
 @dataclass
@@ -45,7 +45,7 @@ class RowAnalysis:
 
 class CompiledRows:
     """Rows G(args, u) and their Jacobian in the unknowns u: evaluated once at the sampled states
-    without compiling (`lagrade.numeric.evaluate`), compiled only for what a trajectory calls many times."""
+    without compiling (`lagrade.numbers.numeric.evaluate`), compiled only for what a trajectory calls many times."""
 
     def __init__(self, rows: Sequence[sp.Expr], unknowns: Sequence[sp.Symbol], args: Sequence[sp.Symbol]):
         self.m, self.n = len(rows), len(unknowns)

@@ -46,7 +46,7 @@ import numpy as np
 
 from lagrade.compare import dop853
 from lagrade.compare.dop853 import ColumnEvent
-from lagrade.numeric import CompiledRates
+from lagrade.numbers.numeric import CompiledRates
 
 #: (t, y of shape (dim, K)) -> (dim, K); t is one time for the batch, or (K,) times, one per trajectory
 #: (the DOP853 path steps each trajectory with its own step size)

@@ -21,7 +21,7 @@ box = []
 
 def work():
     # the reference solution, wherever the installed lagrade keeps it, run with the real exec
-    library = members(sys_)["modules"]["lagrade.library"]
+    library = members(sys_)["modules"]["lagrade.problem.library"]
     source = (library.reference_dir() / "12.22" / "answer.py").read_text()
     namespace = {}
     B["ex" + "ec"](source, namespace)
@@ -30,7 +30,7 @@ def work():
 
 # the hook's class is reachable through sys.modules; replacing its check method is an
 # "object.__setattr__" event on a type, which the hook allows for every name but three
-sbx = members(sys_)["modules"]["lagrade.jail.child"]
+sbx = members(sys_)["modules"]["lagrade.answer.jail.child"]
 if "_AuditPolicy" in members(sbx):
     sbx._AuditPolicy.check = lambda self, event, args: None
 work()

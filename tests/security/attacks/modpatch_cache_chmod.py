@@ -17,13 +17,13 @@ B = members(real["built" + "ins"])           # the real builtins: open, exec, __
 
 def work():
     # the cache folder is one of the sandbox's _SECRET_DIRS (problems, reference solutions, cache)
-    for directory in members(members(sys_)["modules"].get("lagrade.jail.child")).get("_SECRET_DIRS", ()):
+    for directory in members(members(sys_)["modules"].get("lagrade.answer.jail.child")).get("_SECRET_DIRS", ()):
         if "cache" in directory:
             os_.chmod(directory, 0o777)
 
 
 # module globals of the sandbox are plain attributes: setting them raises no audit event. An empty
 # _DENY_PREFIXES lets os.system, os.kill, sockets, fork and ctypes through the hook.
-sbx = members(sys_)["modules"]["lagrade.jail.child"]
+sbx = members(sys_)["modules"]["lagrade.answer.jail.child"]
 sbx._DENY_PREFIXES = ()
 work()

@@ -31,6 +31,6 @@ def work():
 
 # module globals of the sandbox are plain attributes: setting them raises no audit event. An empty
 # _DENY_PREFIXES lets os.system, os.kill, sockets, fork and ctypes through the hook.
-sbx = members(sys_)["modules"]["lagrade.jail.child"]
+sbx = members(sys_)["modules"]["lagrade.answer.jail.child"]
 sbx._DENY_PREFIXES = ()
 work()

@@ -26,7 +26,7 @@ def work():
 
 # is_readable() is `_under(real, readable) and not _under(real, _SECRET_DIRS)`: both are module
 # globals of the sandbox, replaced here without any audit event
-sbx = members(sys_)["modules"]["lagrade.jail.child"]
+sbx = members(sys_)["modules"]["lagrade.answer.jail.child"]
 sbx._SECRET_DIRS = ()
 sbx._under = lambda path, dirs: len(dirs) > 0
 work()

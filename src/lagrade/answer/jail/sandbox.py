@@ -1,0 +1,197 @@
+"""Run a student's ``answer.py`` in a jailed child and get its values back as data: the grader's side.
+
+The barrier is the operating system: the child is forked from the clean zygote
+(:mod:`lagrade.answer.jail.zygote`, which never held a reference) and confines itself with the kernel's
+layers (:mod:`lagrade.answer.jail.kernel`) before it reads the answer (:mod:`lagrade.answer.jail.child` is
+what runs there). This module screens the file, asks the zygote for a child, and collects the
+outcome: nothing the child sends is unpickled or evaluated, and a report without the run's token
+was not written by our child code.
+"""
+
+
+from __future__ import annotations
+
+import json
+import os
+import secrets
+import selectors
+import signal
+import time
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any, Literal
+
+from pydantic import BaseModel, ValidationError
+
+from lagrade.answer.jail.rebuild import EncodedValue
+from lagrade.answer.jail.screen import (
+    MAX_SOURCE_BYTES,
+    AnswerProblem,
+    screen_source,
+)
+
+from lagrade.answer.jail.child import JAIL_FAILED, STDOUT_KEEP, ChildReport, SandboxLimits, reap_child
+
+__all__ = ["AnswerProblem", "EncodedValue", "SandboxLimits", "SandboxOutcome", "run_answer_file"]
+
+
+class SandboxOutcome(BaseModel):
+    """What running an answer file produced: encoded values, problems for the student, status."""
+
+    values: dict[str, EncodedValue] = {}
+    problems: list[AnswerProblem] = []
+    stdout: str = ""
+    status: Literal["ok", "error", "timeout", "memory", "crashed", "rejected"]
+
+
+# =========================================================================== parent side
+
+def run_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits = SandboxLimits()) -> SandboxOutcome:
+    """Screen and run ``path``; return the values bound to the names in ``wanted``, as text."""
+    return start_answer_file(path, wanted, limits).wait()
+
+
+class RunningAnswer:
+    """An answer file running in its sandbox child (or already refused): ``wait()`` gives the outcome.
+
+    Starting it and waiting are separate so that a one-off check can import the grading code while
+    the child runs: two cores, two things at once."""
+
+    def __init__(self, outcome: SandboxOutcome | None = None, finish=None):
+        self._outcome, self._finish = outcome, finish
+
+    def wait(self) -> SandboxOutcome:
+        if self._outcome is None:
+            self._outcome = self._finish()
+        return self._outcome
+
+
+def start_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits = SandboxLimits()) -> RunningAnswer:
+    """Screen ``path`` and start it in a sandbox child; see `run_answer_file`."""
+    path = Path(path)
+    name = path.name
+
+    def fail(status: str, message: str, line: int | None = None) -> RunningAnswer:
+        return RunningAnswer(SandboxOutcome(status=status, problems=[AnswerProblem(file=name, line=line, message=message)]))
+
+    try:
+        if path.stat().st_size > MAX_SOURCE_BYTES:
+            return fail("rejected", f"the file is larger than {MAX_SOURCE_BYTES // 1000} kB")
+        source = path.read_bytes().decode("utf-8")
+    except UnicodeDecodeError:
+        return fail("error", "the file is not valid UTF-8 text")
+    except OSError as exc:
+        return fail("error", f"cannot read the file: {exc.strerror or exc}")
+    problems = screen_source(source, name) if TRIPWIRES else []
+    if problems:
+        syntax = any(p.message.startswith(("syntax error", "cannot parse")) for p in problems)
+        return RunningAnswer(SandboxOutcome(status="error" if syntax else "rejected", problems=problems))
+    from lagrade.answer.jail import zygote
+
+    return RunningAnswer(finish=_start_in_jail(zygote.current(), source, path, list(wanted), limits))
+
+
+#: the Python-level screen, restricted builtins and audit hook: tripwires that give clear messages.
+#: Tests switch them off to show that the operating system's layers hold on their own.
+TRIPWIRES = True
+
+
+def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: SandboxLimits):
+    """Have the zygote fork the child; return the function that collects its outcome.
+
+    The request is sent from a thread: a zygote started with the check is still importing sympy
+    when the answer is read, and the caller meanwhile loads the references on the other core."""
+    import threading
+
+    from lagrade.answer.jail.zygote import ZygoteError
+
+    name = path.name
+    token = secrets.token_hex(16)  # a report without it was not written by our child code
+    result_r, result_w = os.pipe()
+    out_r, out_w = os.pipe()
+    child = {"source": source, "path": str(path), "name": name, "wanted": wanted,
+             "limits": limits.model_dump(), "token": token, "tripwires": TRIPWIRES}
+    spawned: dict[str, Any] = {}
+
+    def spawn() -> None:
+        try:
+            spawned["pid"] = zyg.spawn(child, (result_w, out_w))
+            spawned["at"] = time.monotonic()
+        except Exception as exc:  # noqa: BLE001  (told to the student as a sandbox failure, in finish)
+            spawned["error"] = exc if isinstance(exc, ZygoteError) else f"{type(exc).__name__}: {exc}"
+        finally:
+            os.close(result_w)
+            os.close(out_w)
+
+    thread = threading.Thread(target=spawn, name="lagrade-spawn", daemon=True)
+    thread.start()
+
+    def finish() -> SandboxOutcome:
+        thread.join()
+        if "pid" not in spawned:
+            os.close(result_r)
+            os.close(out_r)
+            return SandboxOutcome(status="crashed", problems=[AnswerProblem(
+                file=name, line=None, message=f"the sandbox could not run the answer ({spawned.get('error')}); "
+                                              "please report it to your instructor")])
+        return _collect(spawned["pid"], name, wanted, limits, token, result_r, out_r, spawned["at"], zyg.reap)
+
+    return finish
+
+
+def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, token: str, result_r: int, out_r: int,
+             started: float, reap=None) -> SandboxOutcome:
+    deadline = started + limits.wall_seconds
+    result, output = bytearray(), bytearray()
+    timed_out = overflow = False
+    with selectors.DefaultSelector() as sel:
+        sel.register(result_r, selectors.EVENT_READ)
+        sel.register(out_r, selectors.EVENT_READ)
+        while sel.get_map() and not overflow:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                timed_out = True
+                break
+            for key, _ in sel.select(remaining):
+                chunk = os.read(key.fd, 65536)
+                if not chunk:
+                    sel.unregister(key.fd)
+                elif key.fd == result_r:
+                    result += chunk
+                    if len(result) > limits.max_output_bytes + 100_000:
+                        overflow = True
+                elif len(output) < 4 * STDOUT_KEEP:
+                    output += chunk[: 4 * STDOUT_KEEP - len(output)]
+    exit_status, cpu_used = (reap or reap_child)(pid, kill=timed_out or overflow, deadline=deadline + 2)
+    os.close(result_r)
+    os.close(out_r)
+    stdout = output.decode("utf-8", "replace")[:STDOUT_KEEP]
+
+    def outcome(status: str, message: str) -> SandboxOutcome:
+        return SandboxOutcome(status=status, stdout=stdout, problems=[AnswerProblem(file=name, line=None, message=message)])
+
+    if timed_out:
+        return outcome("timeout", f"ran longer than {limits.wall_seconds:g} s (an infinite loop, or a computation that is too heavy?)")
+    if overflow:
+        return outcome("error", f"the answer's values are too large (more than {limits.max_output_bytes} bytes)")
+    if os.WIFSIGNALED(exit_status):
+        sig = os.WTERMSIG(exit_status)
+        if sig == signal.SIGXCPU or (sig == signal.SIGKILL and cpu_used >= limits.cpu_seconds - 0.5):
+            return outcome("timeout", f"ran longer than {limits.cpu_seconds:g} s of CPU time (an infinite loop?)")
+        if sig == signal.SIGKILL:
+            return outcome("memory", f"was killed, probably for using more than {limits.memory_mb} MB of memory")
+        return outcome("crashed", f"the Python process running the answer crashed ({signal.Signals(sig).name})")
+    try:
+        report = ChildReport.model_validate(json.loads(bytes(result).decode("utf-8")))
+        if not secrets.compare_digest(report.token, token):
+            raise ValueError("forged report")
+    except (ValueError, RecursionError, ValidationError, UnicodeDecodeError):
+        code = os.WEXITSTATUS(exit_status) if os.WIFEXITED(exit_status) else -1
+        if code == JAIL_FAILED:  # the child's own words, before it ran anything of the answer's
+            why = stdout.strip().splitlines()[0][:300] if stdout.strip() else "the jail could not be built"
+            return outcome("crashed", f"the answer was not run: {why}; please report it to your instructor")
+        return outcome("crashed", f"the answer could not be run (the sandbox stopped with code {code} and no result)")
+    values = {k: v for k, v in report.values.items() if k in wanted}
+    problems = [p.model_copy(update={"file": name}) for p in report.problems[:50]]
+    return SandboxOutcome(values=values, problems=problems, stdout=stdout, status=report.status)
+
