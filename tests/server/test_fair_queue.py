@@ -95,8 +95,8 @@ def test_a_right_answer_is_graded_within_5_s_behind_another_students_ten_loops(t
 @pytest.mark.slow
 def test_a_spare_grader_takes_a_right_answer_while_two_students_loops_hold_the_others(tmp_path):
     """Different students' slow attempts (each its own student: the per-student cap does not help)
-    hold both graders; once they have run past ``slow_after``, a spare grader takes the next one."""
-    config = make_config(tmp_path, workers=2, spare_graders=1, slow_after=1.0, wait_seconds=0.2)
+    hold both graders; once they have used ``cpu_budget`` CPU seconds, a spare grader takes the next one."""
+    config = make_config(tmp_path, workers=2, spare_graders=1, cpu_budget=1.0, wait_seconds=0.2)
     app = create_app(config)
     right = (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes()
     with TestClient(app) as client:

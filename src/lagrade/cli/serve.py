@@ -54,7 +54,7 @@ def _roster(path: Path | None) -> tuple[str, ...] | None:
               help="Proxies whose X-Forwarded-Proto/-For are believed (comma-separated IPs or networks).")
 @click.option("--workers", "-j", type=click.IntRange(min=1), default=2, show_default=True, help="Warm grader processes.")
 @click.option("--spare-graders", type=click.IntRange(min=0), default=4, show_default=True,
-              help="Warm graders that take fresh checks while others run slow ones (longer than 2 s).")
+              help="Warm graders that take fresh checks while others run slow ones (over 1.5 s of CPU).")
 @click.option("--scheduler", help="Grade on an existing Dask cluster instead (tcp://host:8786; needs lagrade[dask]).")
 @click.option("--unsafe-trusted-files", is_flag=True,
               help="Serve even where the OS jail cannot be built (see `lagrade doctor`): never for students.")

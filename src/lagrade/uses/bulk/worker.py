@@ -314,6 +314,86 @@ def _running(pid: int) -> bool:
     return True
 
 
+# =========================================================================== priorities (the server's fairness)
+
+#: CPU seconds a grading may use at normal priority, its answer's children and the grader together
+#: (`benchmarks/grading_cpu.py` measures honest answers: the costliest took a fraction of this)
+CPU_BUDGET = 1.5
+#: the nice value of a grading over its budget: the lowest CPU weight an unprivileged process can set
+LOWERED_NICE = 19
+
+
+def _proc_table() -> dict[int, tuple[int, float, float]]:
+    """pid -> (parent pid, own CPU seconds, reaped children's CPU seconds), from one walk of /proc."""
+    tick = os.sysconf("SC_CLK_TCK")
+    table = {}
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat", "rb") as f:
+                fields = f.read().rsplit(b")", 1)[1].split()
+        except OSError:
+            continue
+        table[int(entry)] = (int(fields[1]), (int(fields[11]) + int(fields[12])) / tick,
+                             (int(fields[13]) + int(fields[14])) / tick)
+    return table
+
+
+def _tree(table: dict[int, tuple[int, float, float]], root: int) -> list[int]:
+    """``root`` and its descendants (the grader, its zygote, the answers' children)."""
+    below: dict[int, list[int]] = {}
+    for pid, (parent, _, _) in table.items():
+        below.setdefault(parent, []).append(pid)
+    out, todo = [], [root] if root in table else []
+    while todo:
+        pid = todo.pop()
+        out.append(pid)
+        todo.extend(below.get(pid, ()))
+    return out
+
+
+def lower(pids) -> None:
+    """Every thread of ``pids`` at :data:`LOWERED_NICE` (nice is per thread on Linux; a thread or a
+    child made later inherits it). A process gone meanwhile is skipped."""
+    for pid in pids:
+        try:
+            tids = [int(t) for t in os.listdir(f"/proc/{pid}/task")]
+        except OSError:
+            continue
+        for tid in tids:
+            try:
+                if os.getpriority(os.PRIO_PROCESS, tid) < LOWERED_NICE:
+                    os.setpriority(os.PRIO_PROCESS, tid, LOWERED_NICE)
+            except OSError:  # gone, or not ours to lower (then it keeps its weight: no worse than before)
+                pass
+
+
+def watch(graders: list[GraderProcess], now: float, budget: float = CPU_BUDGET) -> None:
+    """Lower the gradings that have used more than ``budget`` CPU seconds (a feedback queue of two
+    levels): their answers' children first (``lowered``); the grader and its zygote too when the
+    grader's own work is over the budget (``retire``: an unprivileged process cannot raise its
+    priority again, so that grader is replaced once its job is done). The bounds stay what they
+    were: the CPU bounds count the same seconds, spent later; the wall-clock bounds of a lowered
+    grading are stretched (:data:`lagrade.answer.jail.sandbox.LOWERED_WALL_FACTOR`). One walk of /proc a
+    round, and only when a grading has run long enough to be over the budget."""
+    due = [g for g in graders if g.job is not None and g.ready and g.baseline is not None
+           and (g.lowered or now - g.started > budget / 2)]
+    if not due:
+        return
+    table = _proc_table()
+    for g in due:
+        pids = _tree(table, g.pid)
+        own = sum(table[p][1] for p in g.own_pids if p in table) - g.baseline[0]
+        used = sum(table[p][1] for p in pids) + sum(table[p][2] for p in g.own_pids if p in table) - g.baseline[1]
+        if used > budget or g.lowered:
+            g.lowered = True
+            lower([p for p in pids if p not in g.own_pids])
+        if own > budget or g.retire:
+            g.retire = True
+            lower(pids)
+
+
 class GraderProcess:
     """A grader process seen from the coordinator: start, warm, send a job, wait, kill."""
 
@@ -342,6 +422,12 @@ class GraderProcess:
         self.job: dict[str, Any] | None = None
         self.started = 0.0
         self.ready = False
+        #: the grader and its zygote's pids (found once warm), and their CPU seconds when the job
+        #: started (their own, and their own plus their reaped children's): see :func:`watch`
+        self.own_pids: set[int] = set()
+        self.baseline: tuple[float, float] | None = None
+        self.lowered = False  # this job's answer children run at LOWERED_NICE
+        self.retire = False  # so does the grader: it is stopped once its job is done
         self.send_conn.send({"problems": problems, "dir": self.dir})
 
     @property
@@ -358,7 +444,29 @@ class GraderProcess:
 
     def submit(self, job: dict[str, Any]) -> None:
         self.job, self.started = job, time.monotonic()
+        self.lowered = False
+        self.mark_start()
         self.send_conn.send(job)
+
+    def mark_start(self) -> None:
+        """Note the CPU the grader and its zygote have used so far (a job starts: submitted to a
+        warm grader, or the grader it waited for is warm); the first time, find their pids."""
+        if not self.ready:
+            self.baseline = None
+            return
+        if not self.own_pids:
+            self.own_pids = set(_tree(_proc_table(), self.pid))  # between jobs: no answer's child runs
+        own = kids = 0.0
+        tick = os.sysconf("SC_CLK_TCK")
+        for pid in self.own_pids:
+            try:
+                with open(f"/proc/{pid}/stat", "rb") as f:
+                    fields = f.read().rsplit(b")", 1)[1].split()
+            except OSError:
+                continue
+            own += (int(fields[11]) + int(fields[12])) / tick
+            kids += (int(fields[13]) + int(fields[14])) / tick
+        self.baseline = (own, own + kids)
 
     def fileno(self) -> int:
         return self.recv_conn.fileno()
@@ -421,16 +529,19 @@ def stop_all(graders: list[GraderProcess]) -> None:
         g.remove_dir()  # already gone unless the process failed before it could remove it
 
 
-def overran(limits: dict[str, float]) -> str:
+def overran(limits: dict[str, float], lowered: bool = False) -> str:
     """The reason of a file whose grading overran the hard deadline: a bound it hit (its cost, beyond
     the CPU bound, as a power bomb built while holding the GIL), final like any timeout."""
-    return (f"grading this file did not finish in {hard_deadline(limits):g} s (beyond every time bound of the "
+    return (f"grading this file did not finish in {hard_deadline(limits, lowered):g} s (beyond every time bound of the "
             "assignment); the grader was stopped")
 
 
-def hard_deadline(limits: dict[str, float]) -> float:
-    """Seconds after which the coordinator kills a grader process stuck on one job."""
-    return limits["wall_seconds"] + 2 * limits["grading_seconds"] + 30
+def hard_deadline(limits: dict[str, float], lowered: bool = False) -> float:
+    """Seconds after which the coordinator kills a grader process stuck on one job (a lowered
+    grading's answer has a wall-clock bound :data:`LOWERED_WALL_FACTOR` times as long)."""
+    from lagrade.answer.jail.sandbox import LOWERED_WALL_FACTOR
+
+    return limits["wall_seconds"] * (LOWERED_WALL_FACTOR if lowered else 1) + 2 * limits["grading_seconds"] + 30
 
 
 def look_after(graders: list[GraderProcess], sources: dict[str, str], ready: list, now: float,
@@ -459,16 +570,20 @@ def look_after(graders: list[GraderProcess], sources: dict[str, str], ready: lis
                 if not msg["ready"]:
                     raise WorkerDied(f"a grader process could not start: {msg.get('error')}")
                 g.ready, g.started = True, now
+                g.mark_start()
             else:
                 g.job = None
-                following = next_job()
+                # a lowered grading's grader takes no next job here: its owner retires it, or
+                # counts it as quick again (`GradingQueue._run`)
+                following = next_job() if not (g.lowered or g.retire) else None
                 if following is not None:
                     g.submit(following)
                 done(job, msg)
-        elif g.ready and now - g.started > hard_deadline(job["limits"]):
+        elif g.ready and now - g.started > hard_deadline(job["limits"], g.lowered or g.retire):
             g.kill()
             graders[i] = GraderProcess(sources)
-            done(job, failed_result(job, job["parts"], "timeout", overran(job["limits"]), now - g.started))
+            done(job, failed_result(job, job["parts"], "timeout", overran(job["limits"], g.lowered or g.retire),
+                                    now - g.started))
         elif not g.ready and now - g.started > 600:
             raise WorkerDied("a grader process did not warm up in 10 minutes")
 

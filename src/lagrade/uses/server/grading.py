@@ -12,7 +12,8 @@ that returns a result takes its next job before the grade is written (``look_aft
 
 Fair to students: the queue is a queue per student, served round robin, and one student's attempts
 hold at most ``workers - 1`` graders at once (one, with one grader), so ten infinite loops from one
-student leave a grader to everyone else. :meth:`GradingQueue.admit` caps what a student has in
+student leave a grader to everyone else. A grading that has used more than a CPU budget runs at the
+lowest CPU weight from then on (:meth:`GradingQueue._run`), so the quick answers get the CPU first. :meth:`GradingQueue.admit` caps what a student has in
 flight (queued or grading) and the grader time their attempts used in the last minute; the API
 answers 429 with ``Retry-After`` beyond either.
 """
@@ -36,7 +37,7 @@ from typing import Any
 from lagrade.uses.bulk.assignment import Assignment
 from lagrade.uses.bulk.layout import Submission
 from lagrade.uses.bulk.runner import Plan, plan, problem_totals
-from lagrade.uses.bulk.worker import GraderProcess, failed_result, look_after, stop_all
+from lagrade.uses.bulk.worker import CPU_BUDGET, GraderProcess, failed_result, look_after, stop_all, watch
 from lagrade.verdicts.result import CheckResult, PartResult
 from lagrade.uses.server.db import Attempt, Database
 
@@ -140,17 +141,24 @@ class GradingQueue:
 
     def __init__(self, db: Database, p: Plan, workers: int, scheduler: str | None = None,
                  problems: dict | None = None, in_flight: int = 3, seconds_per_minute: float = 30.0,
-                 spares: int = 0, slow_after: float = 2.0) -> None:
+                 spares: int = 0, cpu_budget: float = CPU_BUDGET, max_graders: int | None = None) -> None:
         """``scheduler``: grade on this Dask cluster (``tcp://host:8786``) as ``lagrade grade --scheduler``
         does (a warm grader process per Dask worker thread), instead of ``workers`` local processes.
         ``in_flight``, ``seconds_per_minute``: what one student may have queued or grading at once,
         and the grader seconds their attempts may use in a minute (:meth:`admit`). ``spares``: warm
-        graders beyond ``workers`` that take fresh attempts while others are held by attempts that
-        have run longer than ``slow_after`` seconds (local graders only)."""
+        graders beyond ``workers`` that take fresh attempts while others are held by gradings lowered
+        for having used more than ``cpu_budget`` CPU seconds; ``max_graders`` (default: three times
+        ``workers + spares``): how many grader processes there may be while lowered gradings hold
+        some (local graders only)."""
         self.db, self.plan, self.workers, self.scheduler = db, p, workers, scheduler
         self.problems = problems or {}
         self.in_flight, self.seconds_per_minute = in_flight, seconds_per_minute
-        self.spares, self.slow_after = spares, slow_after
+        self.spares, self.cpu_budget = spares, cpu_budget
+        self.max_graders = max_graders or 3 * (workers + spares)
+        #: the grader processes now (local graders; read by tests), and the attempts whose grading
+        #: was lowered for having used more than ``cpu_budget``
+        self.graders: list[GraderProcess] = []
+        self.lowered: set[int] = set()
         #: graders one student's attempts may hold at once: never all of them (with one grader, that one)
         self.per_student = max(1, workers - 1)
         self._jobs: dict[str, deque[int]] = {}  # queued attempts, per student, in order
@@ -354,26 +362,50 @@ class GradingQueue:
             loop.call_soon_threadsafe(_resolve, fut)
 
     def _run(self) -> None:
-        """``workers`` graders for fresh attempts; an attempt that runs longer than ``slow_after``
-        (an infinite loop spending its CPU bound, a memory bomb, a huge sum) stops counting against
-        them, and a spare grader takes the next attempt meanwhile: a few slow attempts share the CPU
-        with the quick ones (which take tens of milliseconds) instead of holding them up."""
+        """``workers`` graders for fresh attempts, at normal priority; a grading that has used more
+        than ``cpu_budget`` CPU seconds (an infinite loop spending its CPU bound, a memory bomb, a
+        huge sum; an honest answer takes a fraction of it) is lowered to the lowest CPU weight
+        (:func:`lagrade.uses.bulk.worker.watch`) and stops counting against them: a spare grader takes
+        the next attempt meanwhile, and more are started (up to ``max_graders``) while lowered
+        gradings hold them. The quick answers then get the CPU first; the slow ones get the same
+        CPU seconds, later. A grader whose own priority was lowered is retired after its job (an
+        unprivileged process cannot raise it again), as are graders beyond ``workers + spares``."""
         sources = self.plan.sources
-        graders = [GraderProcess(sources) for _ in range(self.workers + self.spares)]
+        target = self.workers + self.spares
+        graders = self.graders = [GraderProcess(sources) for _ in range(target)]
+
+        def normal() -> int:
+            return sum(1 for h in graders if not (h.lowered or h.retire))
+
         try:
             while not self._stopping:
                 now = time.monotonic()
+                watch(graders, now, self.cpu_budget)
                 for g in graders:
-                    quick = sum(1 for h in graders if h.job is not None and now - h.started <= self.slow_after)
+                    if (g.lowered or g.retire) and g.job is not None and g.job["server_id"] not in self.lowered:
+                        self.lowered.add(g.job["server_id"])
+                        log.info("attempt %s used more than %g s of CPU: it runs at nice 19 from now on%s",
+                                 g.job["server_id"], self.cpu_budget, " (and its grader is retired after)"
+                                 if g.retire else "")
+                for g in [g for g in graders if g.job is None and (g.lowered or g.retire)]:
+                    if g.retire or normal() >= target:
+                        g.kill()  # idle: nothing of a student's is lost
+                        graders.remove(g)
+                    else:
+                        g.lowered = False  # its answer's children were lowered, and are gone
+                while normal() < target and len(graders) < self.max_graders:
+                    graders.append(GraderProcess(sources))
+                for g in graders:
+                    quick = sum(1 for h in graders if h.job is not None and not (h.lowered or h.retire))
                     if quick >= self.workers:
                         break
-                    if g.job is None:
+                    if g.job is None and not (g.lowered or g.retire):
                         job = self._next()
                         if job is None:
                             break
                         g.submit(job)
                 busy = [g for g in graders if g.job is not None]
-                ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=0.25 if self.spares else 1.0)
+                ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=0.25)
                 if self._wake_r in ready:
                     os.read(self._wake_r, 4096)
                 look_after(graders, sources, ready, time.monotonic(), self._done, self._next)
@@ -384,7 +416,6 @@ class GradingQueue:
                 if g.job is not None:
                     g.kill()  # its attempt stays queued in the database
             stop_all([g for g in graders if g.job is None])
-
 
     def _run_dask(self) -> None:
         """The same queue on a Dask cluster: bulk grading's Dask task (``dask_grade``) per attempt."""

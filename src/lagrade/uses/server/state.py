@@ -83,7 +83,8 @@ class Server:
         self.queue = GradingQueue(self.db, self.plan, self.config.workers, self.config.scheduler, self.problems,
                                   in_flight=self.config.student_in_flight,
                                   seconds_per_minute=self.config.student_grader_seconds_per_minute,
-                                  spares=self.config.spare_graders, slow_after=self.config.slow_after)
+                                  spares=self.config.spare_graders, cpu_budget=self.config.cpu_budget,
+                                  max_graders=self.config.max_graders or None)
         self.queue.start()
 
     def stop(self) -> None:
