@@ -25,6 +25,20 @@ def nice(pid: int) -> int:
     return int(Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[16])
 
 
+def _autogroups() -> bool:
+    try:
+        return Path("/proc/sys/kernel/sched_autogroup_enabled").read_text().strip() == "1"
+    except OSError:
+        return False
+
+
+def _autogroup(pid: int) -> str:
+    try:
+        return Path(f"/proc/{pid}/autogroup").read_text().strip()
+    except OSError:  # gone meanwhile
+        return f"nice {LOWERED_NICE}"
+
+
 def _grading(queue, sid: int, seconds: float):
     """The grader grading attempt ``sid``, once it has been lowered (None if it is not within ``seconds``)."""
     end = time.monotonic() + seconds
@@ -65,11 +79,18 @@ def test_a_loop_over_the_budget_runs_at_nice_19_and_keeps_its_verdict(tmp_path):
         assert children, "no answer child under the grader"
         time.sleep(0.3)  # one more round of watch: a child forked meanwhile is lowered too
         assert all(nice(p) == LOWERED_NICE for p in children if Path(f"/proc/{p}").exists())
+        if _autogroups():  # the child's own session weighs as little (the grader's, the server's, is untouched)
+            assert all(f"nice {LOWERED_NICE}" in _autogroup(p) for p in children if Path(f"/proc/{p}").exists())
+            assert _autogroup(g.pid) == _autogroup(os.getpid()) and _autogroup(g.pid).endswith("nice 0")
         assert nice(g.pid) == 0 and not g.retire
         r = _wait_graded(client, alice, sid, 120)
         assert r.status_code == 200
         body = r.json()
-        assert body["status"] == "timeout" and "ran longer than 3 s of CPU time" in " ".join(body["problems"])
+        # its CPU bound, or (on a machine whose CPU others keep busy, where nice 19 gets next to
+        # nothing) the stretched wall-clock backstop: a timeout either way, as at normal priority
+        assert body["status"] == "timeout" and body["score"] == 0
+        assert "ran longer than 3 s of CPU time" in " ".join(body["problems"]) or \
+            "ran longer than 18 s" in " ".join(body["problems"])
         assert sid in queue.lowered
 
 
@@ -131,7 +152,7 @@ def test_honest_answers_are_never_lowered(tmp_path):
             sids.append(r.json()["submission_id"])
             assert _wait_graded(client, bob, sids[-1], 120).status_code == 200
             assert all(nice(h.pid) == 0 for h in queue.graders if h.proc.poll() is None)
-        assert not queue.lowered & set(sids)
+        assert not set(queue.lowered) & set(sids)
         loop = client.post("/api/v1/problems/12.14/check", headers=bearer(app, "alice"),
                            files={"file": ("answer.py", LOOP)}).json()["submission_id"]
         assert _grading(queue, loop, 60) is not None

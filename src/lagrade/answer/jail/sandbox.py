@@ -94,7 +94,7 @@ def start_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits =
 #: how much longer the wall-clock bound of an answer is once its coordinator lowered its priority
 #: (:func:`lagrade.uses.bulk.worker.watch`): at the lowest CPU weight it gets its CPU seconds later, and
 #: its bound is its CPU time; the wall clock stays a backstop
-LOWERED_WALL_FACTOR = 6
+LOWERED_WALL_FACTOR = 3
 
 
 #: the Python-level screen, restricted builtins and audit hook: tripwires that give clear messages.

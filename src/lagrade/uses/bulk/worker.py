@@ -353,10 +353,18 @@ def _tree(table: dict[int, tuple[int, float, float]], root: int) -> list[int]:
     return out
 
 
-def lower(pids) -> None:
+def lower(pids, session: int | None = None) -> None:
     """Every thread of ``pids`` at :data:`LOWERED_NICE` (nice is per thread on Linux; a thread or a
-    child made later inherits it). A process gone meanwhile is skipped."""
+    child made later inherits it). A process gone meanwhile is skipped.
+
+    With the kernel's autogroups (``/proc/sys/kernel/sched_autogroup_enabled``), the CPU is shared
+    between sessions first and a thread's nice counts only within its session: an answer's child,
+    which makes a session of its own (``setsid``), weighs as much as the whole server. So the
+    session of a process outside ``session`` (the grader's) is lowered too: its
+    ``/proc/<pid>/autogroup`` nice (the grader's own session is the server's: never touched)."""
     for pid in pids:
+        if session is not None:
+            _lower_autogroup(pid, session)
         try:
             tids = [int(t) for t in os.listdir(f"/proc/{pid}/task")]
         except OSError:
@@ -367,6 +375,19 @@ def lower(pids) -> None:
                     os.setpriority(os.PRIO_PROCESS, tid, LOWERED_NICE)
             except OSError:  # gone, or not ours to lower (then it keeps its weight: no worse than before)
                 pass
+
+
+def _lower_autogroup(pid: int, session: int) -> None:
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            theirs = int(f.read().rsplit(b")", 1)[1].split()[3])
+        if theirs in (session, 0):
+            return
+        with open(f"/proc/{pid}/autogroup", "r+") as f:
+            if not f.read().rstrip().endswith(f"nice {LOWERED_NICE}"):
+                f.write(str(LOWERED_NICE))
+    except (OSError, ValueError, IndexError):  # gone, no autogroups, or not ours
+        pass
 
 
 def watch(graders: list[GraderProcess], now: float, budget: float = CPU_BUDGET) -> None:
@@ -388,7 +409,7 @@ def watch(graders: list[GraderProcess], now: float, budget: float = CPU_BUDGET) 
         used = sum(table[p][1] for p in pids) + sum(table[p][2] for p in g.own_pids if p in table) - g.baseline[1]
         if used > budget or g.lowered:
             g.lowered = True
-            lower([p for p in pids if p not in g.own_pids])
+            lower([p for p in pids if p not in g.own_pids], session=g.session)
         if own > budget or g.retire:
             g.retire = True
             lower(pids)
@@ -426,6 +447,7 @@ class GraderProcess:
         #: started (their own, and their own plus their reaped children's): see :func:`watch`
         self.own_pids: set[int] = set()
         self.baseline: tuple[float, float] | None = None
+        self.session: int | None = None  # the grader's session (the server's)
         self.lowered = False  # this job's answer children run at LOWERED_NICE
         self.retire = False  # so does the grader: it is stopped once its job is done
         self.send_conn.send({"problems": problems, "dir": self.dir})
@@ -456,6 +478,10 @@ class GraderProcess:
             return
         if not self.own_pids:
             self.own_pids = set(_tree(_proc_table(), self.pid))  # between jobs: no answer's child runs
+            try:
+                self.session = os.getsid(self.pid)
+            except OSError:
+                pass
         own = kids = 0.0
         tick = os.sysconf("SC_CLK_TCK")
         for pid in self.own_pids:

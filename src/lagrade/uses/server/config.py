@@ -34,10 +34,12 @@ class ServerConfig(BaseModel):
     student_grader_seconds_per_minute: float = Field(30, gt=0)
     #: warm graders beyond `workers` that take fresh attempts while others are held by slow ones
     #: (gradings that have used more than `cpu_budget` CPU seconds: they run at nice 19 from then
-    #: on), and how many grader processes there may be while slow ones hold some (0: three times
+    #: on), and how many grader processes there may be while slow ones hold some (0: five times
     #: `workers + spare_graders`)
     spare_graders: int = Field(4, ge=0)
     cpu_budget: float = Field(1.5, gt=0)
+    #: a grading that has run this many seconds (lowered or not yet) no longer holds one of `workers`
+    slow_after: float = Field(2.0, gt=0)
     max_graders: int = Field(0, ge=0)
     previews_per_minute: float = Field(90, gt=0)
     preview_burst: int = Field(30, ge=1)

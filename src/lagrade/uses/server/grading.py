@@ -141,24 +141,26 @@ class GradingQueue:
 
     def __init__(self, db: Database, p: Plan, workers: int, scheduler: str | None = None,
                  problems: dict | None = None, in_flight: int = 3, seconds_per_minute: float = 30.0,
-                 spares: int = 0, cpu_budget: float = CPU_BUDGET, max_graders: int | None = None) -> None:
+                 spares: int = 0, cpu_budget: float = CPU_BUDGET, max_graders: int | None = None,
+                 slow_after: float = 2.0) -> None:
         """``scheduler``: grade on this Dask cluster (``tcp://host:8786``) as ``lagrade grade --scheduler``
         does (a warm grader process per Dask worker thread), instead of ``workers`` local processes.
         ``in_flight``, ``seconds_per_minute``: what one student may have queued or grading at once,
         and the grader seconds their attempts may use in a minute (:meth:`admit`). ``spares``: warm
         graders beyond ``workers`` that take fresh attempts while others are held by gradings lowered
-        for having used more than ``cpu_budget`` CPU seconds; ``max_graders`` (default: three times
+        for having used more than ``cpu_budget`` CPU seconds; ``max_graders`` (default: five times
         ``workers + spares``): how many grader processes there may be while lowered gradings hold
-        some (local graders only)."""
+        some (local graders only). A grading that has run ``slow_after`` seconds stops counting
+        against ``workers`` too, lowered or not yet (at normal priority it may be waiting for the CPU)."""
         self.db, self.plan, self.workers, self.scheduler = db, p, workers, scheduler
         self.problems = problems or {}
         self.in_flight, self.seconds_per_minute = in_flight, seconds_per_minute
-        self.spares, self.cpu_budget = spares, cpu_budget
-        self.max_graders = max_graders or 3 * (workers + spares)
+        self.spares, self.cpu_budget, self.slow_after = spares, cpu_budget, slow_after
+        self.max_graders = max_graders or 5 * (workers + spares)
         #: the grader processes now (local graders; read by tests), and the attempts whose grading
         #: was lowered for having used more than ``cpu_budget``
         self.graders: list[GraderProcess] = []
-        self.lowered: set[int] = set()
+        self.lowered: dict[int, None] = {}  # the last 10 000, in order
         #: graders one student's attempts may hold at once: never all of them (with one grader, that one)
         self.per_student = max(1, workers - 1)
         self._jobs: dict[str, deque[int]] = {}  # queued attempts, per student, in order
@@ -383,7 +385,9 @@ class GradingQueue:
                 watch(graders, now, self.cpu_budget)
                 for g in graders:
                     if (g.lowered or g.retire) and g.job is not None and g.job["server_id"] not in self.lowered:
-                        self.lowered.add(g.job["server_id"])
+                        self.lowered[g.job["server_id"]] = None
+                        if len(self.lowered) > 10_000:
+                            del self.lowered[next(iter(self.lowered))]
                         log.info("attempt %s used more than %g s of CPU: it runs at nice 19 from now on%s",
                                  g.job["server_id"], self.cpu_budget, " (and its grader is retired after)"
                                  if g.retire else "")
@@ -396,7 +400,8 @@ class GradingQueue:
                 while normal() < target and len(graders) < self.max_graders:
                     graders.append(GraderProcess(sources))
                 for g in graders:
-                    quick = sum(1 for h in graders if h.job is not None and not (h.lowered or h.retire))
+                    quick = sum(1 for h in graders if h.job is not None and not (h.lowered or h.retire)
+                                and now - h.started <= self.slow_after)
                     if quick >= self.workers:
                         break
                     if g.job is None and not (g.lowered or g.retire):
