@@ -368,16 +368,13 @@ class GradingQueue:
         than ``cpu_budget`` CPU seconds (an infinite loop spending its CPU bound, a memory bomb, a
         huge sum; an honest answer takes a fraction of it) is lowered to the lowest CPU weight
         (:func:`lagrade.uses.bulk.worker.watch`) and stops counting against them: a spare grader takes
-        the next attempt meanwhile, and more are started (up to ``max_graders``) while lowered
-        gradings hold them. The quick answers then get the CPU first; the slow ones get the same
+        the next attempt meanwhile, and more are started (up to ``max_graders``) when attempts wait
+        and slow gradings hold every grader (stopped again once idle). The quick answers then get the CPU first; the slow ones get the same
         CPU seconds, later. A grader whose own priority was lowered is retired after its job (an
         unprivileged process cannot raise it again), as are graders beyond ``workers + spares``."""
         sources = self.plan.sources
         target = self.workers + self.spares
         graders = self.graders = [GraderProcess(sources) for _ in range(target)]
-
-        def normal() -> int:
-            return sum(1 for h in graders if not (h.lowered or h.retire))
 
         try:
             while not self._stopping:
@@ -392,13 +389,17 @@ class GradingQueue:
                                  g.job["server_id"], self.cpu_budget, " (and its grader is retired after)"
                                  if g.retire else "")
                 for g in [g for g in graders if g.job is None and (g.lowered or g.retire)]:
-                    if g.retire or normal() >= target:
+                    if g.retire:
                         g.kill()  # idle: nothing of a student's is lost
                         graders.remove(g)
                     else:
                         g.lowered = False  # its answer's children were lowered, and are gone
-                while normal() < target and len(graders) < self.max_graders:
-                    graders.append(GraderProcess(sources))
+                while len(graders) < target:
+                    graders.append(GraderProcess(sources))  # in place of a retired one
+                idle = [g for g in graders if g.job is None and g.ready]
+                if len(graders) > target and len(idle) > 1 and not self.pending():
+                    idle[-1].kill()  # a grader started while lowered gradings held the others
+                    graders.remove(idle[-1])
                 for g in graders:
                     quick = sum(1 for h in graders if h.job is not None and not (h.lowered or h.retire)
                                 and now - h.started <= self.slow_after)
@@ -409,6 +410,11 @@ class GradingQueue:
                         if job is None:
                             break
                         g.submit(job)
+                quick = sum(1 for h in graders if h.job is not None and not (h.lowered or h.retire)
+                            and now - h.started <= self.slow_after)
+                if (quick < self.workers and self.pending() and len(graders) < self.max_graders
+                        and not any(h.job is None or not h.ready for h in graders)):
+                    graders.append(GraderProcess(sources))  # every grader is held by slow gradings
                 busy = [g for g in graders if g.job is not None]
                 ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=0.25)
                 if self._wake_r in ready:
