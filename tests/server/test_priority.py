@@ -26,8 +26,11 @@ def nice(pid: int) -> int:
 
 
 def _autogroups() -> bool:
+    """Autogroups on, and readable as ``/autogroup-N nice M`` (some sandboxed kernels, gVisor's among
+    them, switch them on and show an empty ``/proc/<pid>/autogroup``: nothing to check there)."""
     try:
-        return Path("/proc/sys/kernel/sched_autogroup_enabled").read_text().strip() == "1"
+        on = Path("/proc/sys/kernel/sched_autogroup_enabled").read_text().strip() == "1"
+        return on and Path("/proc/self/autogroup").read_text().startswith("/autogroup-")
     except OSError:
         return False
 
