@@ -4,6 +4,7 @@ CPU first), with the same verdicts; a grader lowered itself is replaced; honest 
 from __future__ import annotations
 
 import os
+import sqlite3
 import time
 from pathlib import Path
 
@@ -103,7 +104,7 @@ def test_a_grader_over_the_budget_runs_at_nice_19_and_is_replaced_after(tmp_path
     """A grading whose cost is the grader's own (a long sum read and compared there): the grader and
     its zygote run at nice 19, and once the grade is written that process is gone and a grader at
     normal priority grades the next attempt."""
-    app = create_app(make_config(tmp_path, cpu_budget=0.3, wait_seconds=0.2))
+    app = create_app(make_config(tmp_path, grader_budget=0.3, wait_seconds=0.2))
     with TestClient(app) as client:
         queue = app.state.server.queue
         alice = bearer(app, "alice")
@@ -159,3 +160,46 @@ def test_honest_answers_are_never_lowered(tmp_path):
         loop = client.post("/api/v1/problems/12.14/check", headers=bearer(app, "alice"),
                            files={"file": ("answer.py", LOOP)}).json()["submission_id"]
         assert _grading(queue, loop, 60) is not None
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads /proc")
+def test_a_slow_grading_without_a_place_is_stopped_and_graded_once_later(tmp_path):
+    """One place for slow gradings (``max_graders`` one beyond ``workers + spares``): the first loop
+    keeps it; the second, once over its budget, is stopped, a right answer sent after it is graded
+    at once, and the second loop is graded later, once, with the verdict of its CPU bound."""
+    (tmp_path / "hw.toml").write_text('name = "hw"\n[limits]\ncpu_seconds = 2\nwall_seconds = 4\n[[problems]]\n'
+                                      'id = "12.14"\n', encoding="utf-8")
+    app = create_app(make_config(tmp_path, workers=1, spare_graders=1, max_graders=3, cpu_budget=0.3,
+                                 wait_seconds=0.2))
+    right = (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes()
+    with TestClient(app) as client:
+        queue = app.state.server.queue
+        loops = {}
+        for who in ("alice", "dave"):
+            loops[who] = client.post("/api/v1/problems/12.14/check", headers=bearer(app, who),
+                                     files={"file": ("answer.py", LOOP)}).json()["submission_id"]
+            assert _grading(queue, loops[who], 60) is not None, f"{who}'s loop was never lowered"
+        end = time.monotonic() + 30
+        while not queue.stopped and time.monotonic() < end:
+            time.sleep(0.05)
+        assert list(queue.stopped) == [loops["dave"]], "the second loop was not the one stopped"
+        assert loops["alice"] not in queue.stopped
+        bob = bearer(app, "bob")
+        sent = time.monotonic()
+        sid = client.post("/api/v1/problems/12.14/check", headers=bob,
+                          files={"file": ("answer.py", right)}).json()["submission_id"]
+        r = _wait_graded(client, bob, sid, 60)
+        assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
+        assert time.monotonic() - sent < 10, "the right answer waited for the loops"
+        assert len(queue.graders) <= 3
+        for who, loop in loops.items():
+            body = _wait_graded(client, bearer(app, who), loop, 150).json()
+            assert body["state"] == "graded" and body["status"] == "timeout" and body["score"] == 0, body
+            assert "ran longer than 2 s of CPU time" in " ".join(body["problems"]) or \
+                "ran longer than 12 s" in " ".join(body["problems"])
+    con = sqlite3.connect(tmp_path / "serve.sqlite")
+    twice = con.execute("SELECT count(*) FROM (SELECT 1 FROM grade_log GROUP BY student, problem, file_hash "
+                        "HAVING count(*) > 1)").fetchone()[0]
+    con.close()
+    assert twice == 0

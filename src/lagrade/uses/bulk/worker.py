@@ -316,9 +316,12 @@ def _running(pid: int) -> bool:
 
 # =========================================================================== priorities (the server's fairness)
 
-#: CPU seconds a grading may use at normal priority, its answer's children and the grader together
-#: (`benchmarks/grading_cpu.py` measures honest answers: the costliest took a fraction of this)
-CPU_BUDGET = 1.5
+#: CPU seconds an answer's own code (its jailed children) may use at normal priority, and the
+#: grader's own work on one file (reading, comparing, drawing): `benchmarks/grading_cpu.py` measures
+#: honest answers against both. The first is small because an answer's code only binds names (a loop
+#: or a memory bomb shows itself there first); the second, because it is the reference's work too.
+CPU_BUDGET = 0.5
+GRADER_BUDGET = 1.5
 #: the nice value of a grading over its budget: the lowest CPU weight an unprivileged process can set
 LOWERED_NICE = 19
 
@@ -390,16 +393,18 @@ def _lower_autogroup(pid: int, session: int) -> None:
         pass
 
 
-def watch(graders: list[GraderProcess], now: float, budget: float = CPU_BUDGET) -> None:
-    """Lower the gradings that have used more than ``budget`` CPU seconds (a feedback queue of two
-    levels): their answers' children first (``lowered``); the grader and its zygote too when the
-    grader's own work is over the budget (``retire``: an unprivileged process cannot raise its
-    priority again, so that grader is replaced once its job is done). The bounds stay what they
+def watch(graders: list[GraderProcess], now: float, budget: float = CPU_BUDGET,
+          grader_budget: float = GRADER_BUDGET) -> None:
+    """Lower the gradings that have used more CPU than allowed (a feedback queue of two levels):
+    their answers' children once the answer's code has used more than ``budget`` seconds
+    (``lowered``); the grader and its zygote too once the grader's own work on the file is over
+    ``grader_budget`` (``retire``: an unprivileged process cannot raise its priority again, so that
+    grader is replaced once its job is done). The bounds stay what they
     were: the CPU bounds count the same seconds, spent later; the wall-clock bounds of a lowered
     grading are stretched (:data:`lagrade.answer.jail.sandbox.LOWERED_WALL_FACTOR`). One walk of /proc a
     round, and only when a grading has run long enough to be over the budget."""
     due = [g for g in graders if g.job is not None and g.ready and g.baseline is not None
-           and (g.lowered or now - g.started > budget / 2)]
+           and (g.lowered or now - g.started > min(budget, grader_budget) / 2)]
     if not due:
         return
     table = _proc_table()
@@ -407,10 +412,10 @@ def watch(graders: list[GraderProcess], now: float, budget: float = CPU_BUDGET) 
         pids = _tree(table, g.pid)
         own = sum(table[p][1] for p in g.own_pids if p in table) - g.baseline[0]
         used = sum(table[p][1] for p in pids) + sum(table[p][2] for p in g.own_pids if p in table) - g.baseline[1]
-        if used > budget or g.lowered:
+        if used - own > budget or g.lowered:  # the answer's children, running and reaped
             g.lowered = True
             lower([p for p in pids if p not in g.own_pids], session=g.session)
-        if own > budget or g.retire:
+        if own > grader_budget or g.retire:
             g.retire = True
             lower(pids)
 
@@ -455,6 +460,10 @@ class GraderProcess:
     @property
     def pid(self) -> int:
         return self.proc.pid
+
+    def children(self) -> list[int]:
+        """The processes under this grader now that are not its own (its answer's jailed children)."""
+        return [p for p in _tree(_proc_table(), self.pid) if p not in self.own_pids]
 
     def wait_ready(self, timeout: float = 600) -> None:
         if self.ready:

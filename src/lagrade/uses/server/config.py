@@ -33,11 +33,14 @@ class ServerConfig(BaseModel):
     student_in_flight: int = Field(3, ge=1)
     student_grader_seconds_per_minute: float = Field(30, gt=0)
     #: warm graders beyond `workers` that take fresh attempts while others are held by slow ones
-    #: (gradings that have used more than `cpu_budget` CPU seconds: they run at nice 19 from then
-    #: on), and how many grader processes there may be while slow ones hold some (0: five times
-    #: `workers + spare_graders`)
+    #: (gradings whose answer's code has used more than `cpu_budget` CPU seconds, or the grader's
+    #: own work more than `grader_budget`: they run at nice 19 from then on), and how many grader
+    #: processes there may be, slow ones holding those beyond `workers + spare_graders` (0:
+    #: `workers + spare_graders + max(2, workers)`; a slow grading without a place is stopped and
+    #: graded again once one is free, behind every fresh attempt)
     spare_graders: int = Field(4, ge=0)
-    cpu_budget: float = Field(1.5, gt=0)
+    cpu_budget: float = Field(0.5, gt=0)
+    grader_budget: float = Field(1.5, gt=0)
     #: a grading that has run this many seconds (lowered or not yet) no longer holds one of `workers`
     slow_after: float = Field(2.0, gt=0)
     max_graders: int = Field(0, ge=0)

@@ -25,6 +25,7 @@ import json
 import logging
 import os
 import re
+import signal
 import tempfile
 import tomllib
 import threading
@@ -37,7 +38,8 @@ from typing import Any
 from lagrade.uses.bulk.assignment import Assignment
 from lagrade.uses.bulk.layout import Submission
 from lagrade.uses.bulk.runner import Plan, plan, problem_totals
-from lagrade.uses.bulk.worker import CPU_BUDGET, GraderProcess, failed_result, look_after, stop_all, watch
+from lagrade.uses.bulk.worker import (CPU_BUDGET, GRADER_BUDGET, GraderProcess, failed_result, look_after, stop_all,
+                                     watch)
 from lagrade.verdicts.result import CheckResult, PartResult
 from lagrade.uses.server.db import Attempt, Database
 
@@ -142,29 +144,37 @@ class GradingQueue:
     def __init__(self, db: Database, p: Plan, workers: int, scheduler: str | None = None,
                  problems: dict | None = None, in_flight: int = 3, seconds_per_minute: float = 30.0,
                  spares: int = 0, cpu_budget: float = CPU_BUDGET, max_graders: int | None = None,
-                 slow_after: float = 2.0) -> None:
+                 slow_after: float = 2.0, grader_budget: float = GRADER_BUDGET) -> None:
         """``scheduler``: grade on this Dask cluster (``tcp://host:8786``) as ``lagrade grade --scheduler``
         does (a warm grader process per Dask worker thread), instead of ``workers`` local processes.
         ``in_flight``, ``seconds_per_minute``: what one student may have queued or grading at once,
         and the grader seconds their attempts may use in a minute (:meth:`admit`). ``spares``: warm
         graders beyond ``workers`` that take fresh attempts while others are held by gradings lowered
-        for having used more than ``cpu_budget`` CPU seconds; ``max_graders`` (default: five times
-        ``workers + spares``): how many grader processes there may be while lowered gradings hold
-        some (local graders only). A grading that has run ``slow_after`` seconds stops counting
+        for having used more than ``cpu_budget`` CPU seconds in the answer's code (``grader_budget``
+        in the grader's own work); ``max_graders`` (default: ``workers + spares + max(2, workers)``):
+        how many grader processes there may be, the lowered gradings holding the ones beyond
+        ``workers + spares`` (local graders only: :meth:`_run`). A grading that has run ``slow_after`` seconds stops counting
         against ``workers`` too, lowered or not yet (at normal priority it may be waiting for the CPU)."""
         self.db, self.plan, self.workers, self.scheduler = db, p, workers, scheduler
         self.problems = problems or {}
         self.in_flight, self.seconds_per_minute = in_flight, seconds_per_minute
         self.spares, self.cpu_budget, self.slow_after = spares, cpu_budget, slow_after
-        self.max_graders = max_graders or 5 * (workers + spares)
+        self.grader_budget = grader_budget
+        self.max_graders = max_graders or workers + spares + max(2, workers)
         #: the grader processes now (local graders; read by tests), and the attempts whose grading
         #: was lowered for having used more than ``cpu_budget``
         self.graders: list[GraderProcess] = []
         self.lowered: dict[int, None] = {}  # the last 10 000, in order
+        self.stopped: dict[int, None] = {}  # attempts stopped and queued again (`_park`), likewise
         #: graders one student's attempts may hold at once: never all of them (with one grader, that one)
         self.per_student = max(1, workers - 1)
         self._jobs: dict[str, deque[int]] = {}  # queued attempts, per student, in order
         self._turn: deque[str] = deque()  # students with queued attempts, round robin
+        #: attempts stopped for want of a slow grading's place (:meth:`_park`), graded again from the
+        #: start at nice 19 once no fresh attempt waits and a place is free (never stopped again)
+        self._parked: deque[int] = deque()
+        self._rerun: set[int] = set()
+        self._slow_free = 0  # places among the slow gradings' graders this round (`_run`)
         self._owner: dict[int, str] = {}  # queued or grading attempt -> student
         self._grading: dict[int, float] = {}  # attempt -> when its grading started
         self._used: dict[str, deque[tuple[float, float]]] = defaultdict(deque)  # (when done, grader seconds)
@@ -295,6 +305,7 @@ class GradingQueue:
         job["hints"] = self.plan.assignment.rules.feedback == "hints"  # the course's feedback level
         with self._lock:
             job["plot"] = sid in self._plots
+            job["rerun"] = sid in self._rerun
         return job
 
     def _pick(self) -> int | None:
@@ -315,12 +326,51 @@ class GradingQueue:
                 self._turn.remove(student)
             self._grading[sid] = time.monotonic()
             return sid
+        if self._parked and not self._jobs and self._slow_free > 0:
+            self._slow_free -= 1
+            sid = self._parked.popleft()
+            self._rerun.add(sid)
+            self._grading[sid] = time.monotonic()
+            return sid
         return None
+
+    def _park(self, g: GraderProcess) -> None:
+        """Stop a lowered grading that finds no room among the slow ones, and queue its attempt again
+        (under no lock): its answer's children are killed (the grader then answers at once, and that
+        answer is dropped: :meth:`_done`), or the grader itself when the cost is its own. Nothing is
+        stopped when the answer has finished and the grader is still within its budget: it is left
+        to finish."""
+        sid = g.job["server_id"]
+        if g.retire:
+            g.kill()
+            self.graders.remove(g)
+        else:
+            children = g.children()
+            if not children:
+                return
+            g.job["parked"] = True
+            for pid in children:
+                try:
+                    os.kill(pid, signal.SIGKILL)
+                except OSError:  # gone meanwhile, or not ours: it is its grader's then, which is bounded
+                    pass
+        with self._lock:
+            student = self._owner.get(sid)
+            started = self._grading.pop(sid, None)
+            if student is not None:
+                self._used[student].append((time.monotonic(), time.monotonic() - (started or time.monotonic())))
+                self._parked.append(sid)
+        self.stopped[sid] = None
+        if len(self.stopped) > 10_000:
+            del self.stopped[next(iter(self.stopped))]
+        log.info("attempt %s used more than its CPU budget while the slow gradings' graders were all taken: "
+                 "stopped, it is graded again (from the start, at nice 19) when one is free", sid)
 
     def _forget(self, sid: int, seconds: float | None = None) -> None:
         """An attempt leaves the queue (under the lock): graded (``seconds`` of grader time), or unreadable."""
         student = self._owner.pop(sid, None)
         self._grading.pop(sid, None)
+        self._rerun.discard(sid)
         if student is not None and seconds is not None:
             self._used[student].append((time.monotonic(), seconds))
 
@@ -342,6 +392,8 @@ class GradingQueue:
 
     def _done(self, job: dict[str, Any], result: dict[str, Any]) -> None:
         sid = job["server_id"]
+        if job.get("parked"):
+            return  # what its killed answer left: the attempt is queued again (`_park`)
         with self._lock:
             self._forget(sid, float(result.get("seconds") or 0.0))
         try:
@@ -364,42 +416,62 @@ class GradingQueue:
             loop.call_soon_threadsafe(_resolve, fut)
 
     def _run(self) -> None:
-        """``workers`` graders for fresh attempts, at normal priority; a grading that has used more
-        than ``cpu_budget`` CPU seconds (an infinite loop spending its CPU bound, a memory bomb, a
-        huge sum; an honest answer takes a fraction of it) is lowered to the lowest CPU weight
-        (:func:`lagrade.uses.bulk.worker.watch`) and stops counting against them: a spare grader takes
-        the next attempt meanwhile, and more are started (up to ``max_graders``) when attempts wait
-        and slow gradings hold every grader (stopped again once idle). The quick answers then get the CPU first; the slow ones get the same
-        CPU seconds, later. A grader whose own priority was lowered is retired after its job (an
-        unprivileged process cannot raise it again), as are graders beyond ``workers + spares``."""
+        """``workers`` graders for fresh attempts, at normal priority, and ``spares`` warm ones beside
+        them. A grading whose answer's code has used more than ``cpu_budget`` CPU seconds (an infinite
+        loop spending its CPU bound, a memory bomb, a huge sum; honest answers use a fraction of it),
+        or the grader's own work more than ``grader_budget``, is lowered to the lowest CPU weight
+        (:func:`lagrade.uses.bulk.worker.watch`) and stops counting against them: it goes on, on its
+        grader, among the slow gradings (at most ``max_graders - workers - spares`` of them), and a
+        grader is started in its place. When the slow gradings hold all their graders, a newly
+        lowered one is stopped and its attempt waits for one of them, behind every fresh attempt
+        (:meth:`_park`). The quick answers get the CPU, and the graders, first; the slow ones get
+        the same CPU seconds, later. A grader whose own priority was lowered is retired after its job
+        (an unprivileged process cannot raise it again)."""
         sources = self.plan.sources
         target = self.workers + self.spares
+        slow_places = max(1, self.max_graders - target)
         graders = self.graders = [GraderProcess(sources) for _ in range(target)]
+
+        def slow(g: GraderProcess) -> bool:
+            return g.job is not None and (g.lowered or g.retire)
 
         try:
             while not self._stopping:
                 now = time.monotonic()
-                watch(graders, now, self.cpu_budget)
                 for g in graders:
-                    if (g.lowered or g.retire) and g.job is not None and g.job["server_id"] not in self.lowered:
+                    if g.job is not None and g.job.get("rerun"):
+                        g.lowered = True  # graded again after it was stopped: at nice 19 from the start
+                watch(graders, now, self.cpu_budget, self.grader_budget)
+                for g in graders:
+                    if slow(g) and g.job["server_id"] not in self.lowered:
                         self.lowered[g.job["server_id"]] = None
                         if len(self.lowered) > 10_000:
                             del self.lowered[next(iter(self.lowered))]
-                        log.info("attempt %s used more than %g s of CPU: it runs at nice 19 from now on%s",
-                                 g.job["server_id"], self.cpu_budget, " (and its grader is retired after)"
-                                 if g.retire else "")
+                        log.info("attempt %s used more than its CPU budget: it runs at nice 19 from now on%s",
+                                 g.job["server_id"], " (and its grader is retired after)" if g.retire else "")
+                # the slow gradings beyond their places, the newest first, are stopped
+                over = [g for g in graders if slow(g) and not g.job.get("parked")]
+                if len(over) > slow_places:
+                    for g in sorted((g for g in over if not g.job.get("rerun")),
+                                    key=lambda h: -h.started)[:len(over) - slow_places]:
+                        self._park(g)
                 for g in [g for g in graders if g.job is None and (g.lowered or g.retire)]:
                     if g.retire:
                         g.kill()  # idle: nothing of a student's is lost
                         graders.remove(g)
                     else:
                         g.lowered = False  # its answer's children were lowered, and are gone
-                while len(graders) < target:
-                    graders.append(GraderProcess(sources))  # in place of a retired one
+                held = sum(1 for g in graders if slow(g) and not g.job.get("parked"))
+                # the others, warm or warming, are kept at `workers + spares`, started ahead of the
+                # attempts that will need them (a grader takes about a second to warm up)
+                while len(graders) - held < target and len(graders) < self.max_graders:
+                    graders.append(GraderProcess(sources))
                 idle = [g for g in graders if g.job is None and g.ready]
-                if len(graders) > target and len(idle) > 1 and not self.pending():
-                    idle[-1].kill()  # a grader started while lowered gradings held the others
+                if (len(graders) > target and idle and not held and not self._parked and not self.pending()):
+                    idle[-1].kill()  # started while slow gradings held others, and all is quiet again
                     graders.remove(idle[-1])
+                with self._lock:
+                    self._slow_free = slow_places - held
                 for g in graders:
                     quick = sum(1 for h in graders if h.job is not None and not (h.lowered or h.retire)
                                 and now - h.started <= self.slow_after)
@@ -410,15 +482,17 @@ class GradingQueue:
                         if job is None:
                             break
                         g.submit(job)
-                quick = sum(1 for h in graders if h.job is not None and not (h.lowered or h.retire)
-                            and now - h.started <= self.slow_after)
-                if (quick < self.workers and self.pending() and len(graders) < self.max_graders
-                        and not any(h.job is None or not h.ready for h in graders)):
-                    graders.append(GraderProcess(sources))  # every grader is held by slow gradings
+                        if job.get("rerun"):
+                            g.lowered = True
                 busy = [g for g in graders if g.job is not None]
-                ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=0.25)
+                # while a grading may go over its budget, look every 0.1 s (a walk of /proc costs
+                # about a millisecond): each tenth of a second later is CPU the quick answers lose
+                watched = any(not g.lowered and now - g.started > self.cpu_budget / 2 for g in busy)
+                ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=0.1 if watched else 0.25)
                 if self._wake_r in ready:
                     os.read(self._wake_r, 4096)
+                with self._lock:
+                    self._slow_free = 0  # a grader that answers takes no rerun: the next round decides
                 look_after(graders, sources, ready, time.monotonic(), self._done, self._next)
         except Exception:
             log.exception("the grading thread stopped; queued attempts are graded when the server starts again")

@@ -84,6 +84,7 @@ class Server:
                                   in_flight=self.config.student_in_flight,
                                   seconds_per_minute=self.config.student_grader_seconds_per_minute,
                                   spares=self.config.spare_graders, cpu_budget=self.config.cpu_budget,
+                                  grader_budget=self.config.grader_budget,
                                   max_graders=self.config.max_graders or None,
                                   slow_after=self.config.slow_after)
         self.queue.start()
