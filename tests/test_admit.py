@@ -116,3 +116,37 @@ def test_declared_drag_keeps_its_velocity_switch():
     eom = [sp.Eq(th.diff(t, 2), -c * a * th.diff(t) * sp.Abs(th.diff(t)) / m)]
     got = part(lagrade.check("12.34", eom=eom), "eom")
     assert got.verdict == "correct", got.feedback
+
+
+def _screen_12_14():
+    from lagrade.derive.reference import Mechanics
+    from lagrade.problem.library import load_problem
+
+    problem = load_problem("12.14")
+    mech = Mechanics(problem, problem.systems[0])
+    return mech, next(p for p in problem.parts if p.name == "L")
+
+
+def test_a_part_too_small_to_matter_anywhere_sampled_is_named_and_the_rest_is_not():
+    from lagrade.verdicts.checkers.admit import _negligible
+
+    mech, L = _screen_12_14()
+    m1_, m2_, l1_, g_, th1 = sp.symbols("m1 m2 l1 g theta1")
+    right = (m1_ + m2_) * g_ * l1_ * sp.cos(th1) + m1_ * l1_ ** 2 * sp.Symbol("theta1_d") ** 2 / 2
+    assert _negligible(right, L, mech) == []
+    tiny = g_ * l1_ * m1_ * th1 * (m1_ * m2_ / (m1_ + m2_) ** 2) ** 200
+    notes = _negligible(right + tiny, L, mech)
+    assert len(notes) == 1 and "changes the whole by less than 1e-05" in notes[0]
+    # inside a function, where the part's own size is not small but its effect is: cos(tiny) is 1
+    assert _negligible(right * sp.cos((m1_ * m2_ / (m1_ + m2_) ** 2) ** 100), L, mech)
+
+
+def test_an_expression_too_long_to_weigh_needs_a_proof(monkeypatch):
+    from lagrade.verdicts.checkers import admit
+
+    mech, L = _screen_12_14()
+    m1_, g_, th1 = sp.symbols("m1 g theta1")
+    monkeypatch.setattr(admit, "NEGLIGIBLE_NODES", 10)
+    expr = sum(sp.cos(k * th1) * m1_ * g_ / k for k in range(1, 12))
+    assert admit._negligible(expr, L, mech) == [f"it is too long ({sp.count_ops(expr)} operations) to be weighed part "
+                                                "by part"]

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import lagrade
-from lagrade.verdicts.checkers import dynamics
+from lagrade.verdicts.checkers import admit, dynamics
 from lagrade.compare import trajectory as tr
 from lagrade.compare.trajectory import ACCURACY, Comparison, compare_runs, confirm_refutation
 from lagrade.verdicts.result import PartResult
@@ -29,6 +29,24 @@ BEYOND_THE_BOX = (
 
 def _part(result, name: str = "eom_exact") -> PartResult:
     return next(p for p in result.parts if p.part == name)
+
+
+@pytest.fixture(autouse=True)
+def _motion_evidence_alone(request, monkeypatch):
+    """The answers here hide a term too small for the sampled states to see, which the screen's
+    negligible-part rule (`admit._negligible`) already refuses without a proof; these tests are about
+    the evidence that decides where that rule does not reach, so it is switched off for them."""
+    if "negligible_rule" not in request.keywords:
+        monkeypatch.setattr(admit, "_negligible", lambda *a, **k: [])
+
+
+@pytest.mark.negligible_rule
+def test_the_screen_refuses_it_first(beyond_the_box):
+    """With the negligible-part rule on (as grading runs), the hidden term is named and the answer
+    gets no credit without a proof, before any motion is integrated."""
+    part = _part(lagrade.check("12.14", beyond_the_box, accuracy="default"))
+    assert part.verdict == "incorrect" and part.score == 0, part.feedback
+    assert "changes the whole by less than" in part.feedback and "exp(" in part.feedback
 
 
 @pytest.fixture

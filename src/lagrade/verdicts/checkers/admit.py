@@ -55,6 +55,13 @@ SIMPLE_FACTORS = (sp.S.One, sp.pi, *(sp.sqrt(k) for k in (2, 3, 5, 6, 7, 10)))
 FLOAT_TOLERANCE = 1e-12
 #: constants outside this range of sizes are not unit-sized numbers a formula has: an exp(-1000), a 1e-9
 CONSTANT_SIZES = (1e-6, 1e6)
+#: a part of an expression whose effect on the whole is below this share of it at every sampled state
+#: cannot change a comparison made within a relative tolerance of 1e-6 (nor can anything of its size
+#: that is wrong): sampling does not see it, so only a proof may accept the expression
+NEGLIGIBLE = 1e-5
+#: operations beyond which an expression is not weighed part by part but needs a proof (no honest
+#: answer comes near; weighing costs about a microsecond an operation)
+NEGLIGIBLE_NODES = 100_000
 
 
 class Refuted(Exception):
@@ -133,6 +140,7 @@ def screen(expr: sp.Expr, part: Part, mech) -> sp.Expr:
     if part.kind not in NUMERIC_KINDS:  # a numerical solution is numbers, compared within a tolerance
         expr, notes = _numbers(expr)
         notes += _constructs(expr, part, mech)
+        notes += _negligible(expr, part, mech)
     if _maybe_complex(expr):
         _reality(expr, part, mech)
     current = _SCREEN.get()
@@ -439,6 +447,113 @@ def _maybe_complex(expr: sp.Basic) -> bool:
     return False
 
 
+#: numpy's functions for the screen's own evaluation of a tree, node by node (`_negligible`)
+_NUMPY = {"sin": np.sin, "cos": np.cos, "tan": np.tan, "exp": np.exp, "log": np.log, "sinh": np.sinh,
+          "cosh": np.cosh, "tanh": np.tanh, "asin": np.arcsin, "acos": np.arccos, "atan": np.arctan,
+          "asinh": np.arcsinh, "acosh": np.arccosh, "atanh": np.arctanh,
+          "cot": lambda x: 1 / np.tan(x), "sec": lambda x: 1 / np.cos(x), "csc": lambda x: 1 / np.sin(x),
+          "coth": lambda x: 1 / np.tanh(x), "sech": lambda x: 1 / np.cosh(x), "csch": lambda x: 1 / np.sinh(x)}
+
+
+def _negligible(expr: sp.Expr, part: Part, mech) -> list[str]:
+    """Parts of ``expr`` too small to matter at every sampled state: a term of a sum, an argument of a
+    function or an exponent whose effect on the whole is below :data:`NEGLIGIBLE` of it everywhere
+    sampled (``L + m1*g*l1*theta1*(m1*m2/(m1 + m2)**2)**200``, ``L*cos((m1/(m1 + m2))**300)``). Such a
+    part is wrong or right unseen: the comparison at sampled states cannot decide it.
+
+    The effect of a part is its size times how much the whole changes with it (reverse-mode
+    derivatives through sums, products, powers and the elementary functions, in complex floating point
+    at the screen's sampled states, node by node: no code is generated). Anything else (a general
+    function, a derivative, a switch: the other rules judge those) is evaluated whole and not looked
+    into, or stands for an unknown value when it cannot be evaluated. An expression of more than
+    :data:`NEGLIGIBLE_NODES` operations is not weighed, and needs a proof for that."""
+    if expr.is_Atom or not expr.free_symbols:
+        return []
+    size = sp.count_ops(expr, visual=False)
+    too_long = [f"it is too long ({size} operations) to be weighed part by part"]
+    if size > NEGLIGIBLE_NODES:
+        return too_long
+    free = sorted(expr.free_symbols, key=str)
+    K = 24
+    value: dict[sp.Basic, np.ndarray] = dict(zip(free, _sample_args(free, mech, part, "negligible", K)))
+    opaque: set[sp.Basic] = set()
+    stand_in = np.random.default_rng(0)
+
+    def ev(e: sp.Basic) -> np.ndarray:
+        v = value.get(e)
+        if v is not None:
+            return v
+        if e.is_Number or e.is_NumberSymbol:
+            v = np.full(K, complex(e))
+        elif e.is_Add:
+            v = sum((ev(a) for a in e.args), np.zeros(K, dtype=complex))
+        elif e.is_Mul:
+            v = np.ones(K, dtype=complex)
+            for a in e.args:
+                v = v * ev(a)
+        elif e.is_Pow:
+            v = ev(e.args[0]) ** ev(e.args[1])
+        elif isinstance(e, sp.Function) and len(e.args) == 1 and type(e).__name__ in _NUMPY:
+            v = _NUMPY[type(e).__name__](ev(e.args[0]))
+        else:
+            opaque.add(e)
+            try:
+                inner = sorted(e.free_symbols, key=str)
+                v = np.broadcast_to(np.asarray(sp.lambdify(inner, e, modules=["numpy"])(
+                    *[value[x] for x in inner]), dtype=complex), (K,))
+            except Exception:  # noqa: BLE001  (a general function, a derivative of one: an unknown value)
+                v = stand_in.uniform(0.5, 1.5, K).astype(complex)
+        value[e] = v
+        return v
+
+    try:
+        with np.errstate(all="ignore"):
+            whole = np.abs(ev(expr))
+            # how much the whole moves per unit of each part, summed over the paths from the root
+            weight: dict[sp.Basic, np.ndarray] = {}
+            walk, steps = [(expr, np.ones(K))], 0
+            while walk:
+                e, w = walk.pop()
+                steps += 1
+                if steps > 4 * NEGLIGIBLE_NODES:
+                    return too_long
+                weight[e] = weight.get(e, 0.0) + w
+                if e.is_Atom or e in opaque:
+                    continue
+                if e.is_Add:
+                    walk.extend((a, w) for a in e.args)
+                elif e.is_Mul:
+                    for i, a in enumerate(e.args):
+                        others = np.ones(K, dtype=complex)
+                        for j, b in enumerate(e.args):
+                            if j != i:
+                                others = others * value[b]
+                        walk.append((a, w * np.abs(others)))
+                elif e.is_Pow:
+                    b, x = e.args
+                    walk.append((b, w * np.abs(value[x] * value[b] ** (value[x] - 1))))
+                    if not x.is_Atom:
+                        walk.append((x, w * np.abs(value[e] * np.log(value[b]))))
+                else:
+                    walk.append((e.args[0], w * np.abs(ev(e.fdiff(1)))))
+    except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+        return []
+    notes = []
+    for e in [e for e in weight if e not in opaque]:
+        parts = [a for a in e.args if not a.is_Atom] if e.is_Add else \
+            [e.args[1]] if e.is_Pow and not e.args[1].is_Atom else \
+            [e.args[0]] if isinstance(e, sp.Function) and not e.args[0].is_Atom else []
+        for a in parts:
+            effect = weight.get(a, 0.0) * np.abs(value[a])
+            ok = np.isfinite(whole) & (whole > 0) & np.isfinite(effect)
+            if ok.sum() >= K // 2 and np.all(effect[ok] <= NEGLIGIBLE * whole[ok]):
+                notes.append(f"the part {_short(a)} changes the whole by less than {NEGLIGIBLE:g} of it at every "
+                             "state tried (too small for sampling to see)")
+                if len(notes) >= 3:
+                    return notes
+    return notes
+
+
 def _reality(expr: sp.Expr, part: Part, mech) -> None:
     """An imaginary part at any sampled state refutes: every quantity of these problems is real."""
     # constants as sympy evaluates them (numpy's arcsin(2) is NaN, not complex)
@@ -456,6 +571,14 @@ def _reality(expr: sp.Expr, part: Part, mech) -> None:
 def _at_samples(expr: sp.Expr, mech, part: Part, purpose: str, K: int = 24) -> np.ndarray:
     """``expr`` in complex arithmetic at the part's kind of sampled states (every symbol of the scene
     from its range; any other symbol uniform in [0.5, 1.5])."""
+    free = sorted(expr.free_symbols, key=str)
+    f = sp.lambdify(free, expr, modules=["numpy"])
+    out = f(*_sample_args(free, mech, part, purpose, K)) if free else f()
+    return np.broadcast_to(np.asarray(out, dtype=complex), (K,))
+
+
+def _sample_args(free: list[sp.Symbol], mech, part: Part, purpose: str, K: int) -> list[np.ndarray]:
+    """Complex arrays of ``K`` sampled values for the symbols ``free`` (as `_at_samples` says)."""
     from lagrade.compare.sampling import rng_for, sample_points
 
     pts = sample_points(mech, K, rng_for(mech.problem.id, part.name, purpose), extra=part.symbol_domains)
@@ -463,11 +586,7 @@ def _at_samples(expr: sp.Expr, mech, part: Part, purpose: str, K: int = 24) -> n
     values = dict(pts.values)
     for p in mech.s.p:  # any real momenta: reality and branch signs are all that is asked here
         values.setdefault(p, rng.uniform(-1.5, 1.5, K))
-    free = sorted(expr.free_symbols, key=str)
-    args = [values[s] if s in values else rng.uniform(0.5, 1.5, K) for s in free]
-    f = sp.lambdify(free, expr, modules=["numpy"])
-    out = f(*[np.asarray(a, dtype=complex) for a in args]) if free else f()
-    return np.broadcast_to(np.asarray(out, dtype=complex), (K,))
+    return [np.asarray(values[s] if s in values else rng.uniform(0.5, 1.5, K), dtype=complex) for s in free]
 
 
 # ----------------------------------------------------------------------------- the wrapper
