@@ -79,8 +79,10 @@ def test_a_lagrangian_wrong_only_beyond_the_box_is_rejected_along_the_motion(tmp
 
 def test_the_box_samples_alone_accept_it(beyond_the_box, monkeypatch):
     """What main did: without the states along the motion the answer is accepted (its trajectories
-    agree within the comparison tolerance), so the new evidence is what decides it."""
+    agree within the comparison tolerance), so the new evidence is what decides it. (The exact
+    re-check at the sampled states, `dynamics._exact_refutation`, would refute it too: off here.)"""
     monkeypatch.setattr(dynamics, "_along_motion", lambda *a, **k: None)
+    monkeypatch.setattr(dynamics, "_exact_refutation", lambda *a, **k: None)
     part = _part(lagrade.check("12.14", beyond_the_box, accuracy="default"))
     assert part.verdict == "correct", part.feedback
 
@@ -101,7 +103,9 @@ def _perturbed_g(tmp_path: Path) -> Path:
 
 
 def test_a_trajectory_refutation_carries_its_evidence_for_the_instructor(tmp_path, monkeypatch):
-    # states at 1e-3 let the 1e-6 error through: only the trajectory comparison can refute it
+    # states at 1e-3 let the 1e-6 error through: only the trajectory comparison can refute it (the
+    # exact re-check at the sampled states would too: off here, to test the trajectory's evidence)
+    monkeypatch.setattr(dynamics, "_exact_refutation", lambda *a, **k: None)
     monkeypatch.setitem(tr.ACCURACY, "default-loose",
                         dataclasses.replace(ACCURACY["default"], name="default-loose", sample_rtol=1e-3))
     result = lagrade.check("12.14", _perturbed_g(tmp_path), accuracy="default-loose")

@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 import lagrade
+from lagrade.verdicts.checkers import dynamics
 from lagrade.verdicts.checkers.base import Context
 from lagrade.verdicts.checkers.dynamics import _decide
 from lagrade.compare import trajectory as tr
@@ -48,7 +49,10 @@ def loose_samples(monkeypatch):
                             dataclasses.replace(ACCURACY[name], name=f"{name}-loose", sample_rtol=1e-3))
 
 
-def test_a_trajectory_beyond_tolerance_refutes(tmp_path, loose_samples):
+def test_a_trajectory_beyond_tolerance_refutes(tmp_path, loose_samples, monkeypatch):
+    # the exact re-check at the sampled states (`dynamics._exact_refutation`) refutes this answer before
+    # any trajectory is compared, under every preset; off here, to test the trajectories' evidence alone
+    monkeypatch.setattr(dynamics, "_exact_refutation", lambda *a, **k: None)
     for accuracy in ("strict-loose", "default-loose"):
         part = _eom_exact(lagrade.check("12.14", _perturbed_g(tmp_path, SMALL), accuracy=accuracy))
         assert part.verdict == "incorrect" and part.method == "trajectory", (accuracy, part.feedback)
@@ -120,3 +124,12 @@ def test_review_reaches_the_json_but_no_reference():
     ctx, part = _ctx_part()
     res = _decide(ctx, part, None, None)
     assert "review" in res.model_dump(mode="json")
+
+
+def test_the_exact_re_check_refutes_what_the_trajectories_would_under_every_preset(tmp_path, loose_samples):
+    """The same 1e-6 error in g, with the exact re-check on (as grading runs): refuted at the sampled
+    states, with a certificate, even under the fast preset whose trajectories cannot see it."""
+    for accuracy in ("fast-loose", "default-loose", "strict-loose"):
+        part = _eom_exact(lagrade.check("12.14", _perturbed_g(tmp_path, SMALL), accuracy=accuracy))
+        assert part.verdict == "incorrect" and "at an exact state" in part.feedback, (accuracy, part.feedback)
+        assert part.certified is True, part.review

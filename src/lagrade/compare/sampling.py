@@ -36,6 +36,15 @@ def rng_for(*keys: str) -> np.random.Generator:
     return np.random.default_rng(zlib.crc32("/".join(keys).encode()))
 
 
+def grouped(pts: Points, mech: Mechanics, symbols: Sequence[str] = (), per_group: int = 4) -> Points:
+    """``pts`` with the parameters, t and ``symbols`` shared by groups of ``per_group`` states (so
+    that 'constant' can be told from 'state-dependent': the Lagrangian's comparison)."""
+    for sym in [*mech.params, T, *(sp.Symbol(s) for s in symbols)]:
+        v = pts.values[sym]
+        pts.values[sym] = np.repeat(v[::per_group], per_group)
+    return pts
+
+
 def sample_points(mech: Mechanics, K: int, rng: np.random.Generator,
                   extra: Mapping[str, tuple[float, float]] | Sequence[str] = ()) -> Points:
     """States (q, qd, qdd, p, t) and parameters; ``qdd`` random (for identities in the accelerations)

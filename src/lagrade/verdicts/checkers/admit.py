@@ -456,28 +456,41 @@ _NUMPY = {"sin": np.sin, "cos": np.cos, "tan": np.tan, "exp": np.exp, "log": np.
 
 
 def _negligible(expr: sp.Expr, part: Part, mech) -> list[str]:
-    """Parts of ``expr`` too small to matter at every sampled state: a term of a sum, an argument of a
-    function or an exponent whose effect on the whole is below :data:`NEGLIGIBLE` of it everywhere
-    sampled (``L + m1*g*l1*theta1*(m1*m2/(m1 + m2)**2)**200``, ``L*cos((m1/(m1 + m2))**300)``). Such a
-    part is wrong or right unseen: the comparison at sampled states cannot decide it.
+    """Parts of ``expr`` too small to matter at every state the comparison samples: a term of a sum, an
+    argument of a function or an exponent whose effect on the whole is below :data:`NEGLIGIBLE` of it
+    at each of them (``L + m1*g*l1*theta1*(m1*m2/(m1 + m2)**2)**200``, ``L*cos((m1/(m1 + m2))**300)``,
+    ``a*(m1 + 10**11)/(m2 + 10**11)``). Such a part is wrong or right unseen: the comparison at
+    sampled states cannot decide it. A part proved zero (an identity left unsimplified) is not one.
 
-    The effect of a part is its size times how much the whole changes with it (reverse-mode
-    derivatives through sums, products, powers and the elementary functions, in complex floating point
-    at the screen's sampled states, node by node: no code is generated). Anything else (a general
-    function, a derivative, a switch: the other rules judge those) is evaluated whole and not looked
-    into, or stands for an unknown value when it cannot be evaluated. An expression of more than
+    The states are the comparison's own (`comparison_states`): a part visible at some state of the
+    rule's but at none of the comparison's (a spike placed at one) would otherwise escape both. The
+    effect of a part is its size times how much the whole changes with it (reverse-mode derivatives
+    through sums, products, powers and the analytic functions, in complex floating point, node by
+    node: no code is generated but for functions numpy has no twin of), and the whole's size is taken
+    without cancellation (a sum's is the sum of its terms' sizes). A general function, a derivative or
+    a switch (the other rules judge those) is evaluated whole and not looked into, or stands for an
+    unknown value when it cannot be evaluated. An expression of more than
     :data:`NEGLIGIBLE_NODES` operations is not weighed, and needs a proof for that."""
     if expr.is_Atom or not expr.free_symbols:
         return []
-    size = sp.count_ops(expr, visual=False)
-    too_long = [f"it is too long ({size} operations) to be weighed part by part"]
-    if size > NEGLIGIBLE_NODES:
+    size_ops = sp.count_ops(expr, visual=False)
+    too_long = [f"it is too long ({size_ops} operations) to be weighed part by part"]
+    if size_ops > NEGLIGIBLE_NODES:
         return too_long
     free = sorted(expr.free_symbols, key=str)
-    K = 24
-    value: dict[sp.Basic, np.ndarray] = dict(zip(free, _sample_args(free, mech, part, "negligible", K)))
+    sets = comparison_states(free, mech, part)
+    value: dict[sp.Basic, np.ndarray] = {x: np.concatenate([v[x] for v in sets]) for x in free}
+    K = len(value[free[0]])
     opaque: set[sp.Basic] = set()
     stand_in = np.random.default_rng(0)
+
+    def whole_node(e: sp.Basic) -> np.ndarray:
+        inner = sorted(e.free_symbols, key=str)
+        f = sp.lambdify(inner, e, modules=["numpy", "scipy"])
+        try:
+            return np.broadcast_to(np.asarray(f(*[value[x] for x in inner]), dtype=complex), (K,))
+        except TypeError:  # a real function (atan2) given complex arrays: real values, imaginary parts ~0
+            return np.broadcast_to(np.asarray(f(*[np.real(value[x]) for x in inner]), dtype=complex), (K,))
 
     def ev(e: sp.Basic) -> np.ndarray:
         v = value.get(e)
@@ -495,20 +508,44 @@ def _negligible(expr: sp.Expr, part: Part, mech) -> list[str]:
             v = ev(e.args[0]) ** ev(e.args[1])
         elif isinstance(e, sp.Function) and len(e.args) == 1 and type(e).__name__ in _NUMPY:
             v = _NUMPY[type(e).__name__](ev(e.args[0]))
+        elif isinstance(e, sp.Function) and type(e).__name__ in ANALYTIC_FUNCTIONS:
+            for a in e.args:
+                ev(a)
+            v = whole_node(e)
         else:
             opaque.add(e)
             try:
-                inner = sorted(e.free_symbols, key=str)
-                v = np.broadcast_to(np.asarray(sp.lambdify(inner, e, modules=["numpy"])(
-                    *[value[x] for x in inner]), dtype=complex), (K,))
+                v = whole_node(e)
             except Exception:  # noqa: BLE001  (a general function, a derivative of one: an unknown value)
                 v = stand_in.uniform(0.5, 1.5, K).astype(complex)
         value[e] = v
         return v
 
+    def slope(e: sp.Basic, i: int) -> np.ndarray:
+        return np.abs(ev(e.fdiff(i + 1)))
+
     try:
         with np.errstate(all="ignore"):
-            whole = np.abs(ev(expr))
+            ev(expr)
+            # the whole's size without cancellation (sums of sizes, products of sizes): an L that
+            # passes through zero at one state must not make every part look large there
+            size: dict[sp.Basic, np.ndarray] = {}
+
+            def magnitude(e: sp.Basic) -> np.ndarray:
+                m = size.get(e)
+                if m is None:
+                    if e.is_Add:
+                        m = sum((magnitude(a) for a in e.args), np.zeros(K))
+                    elif e.is_Mul:
+                        m = np.ones(K)
+                        for a in e.args:
+                            m = m * magnitude(a)
+                    else:
+                        m = np.abs(value[e])
+                    size[e] = m
+                return m
+
+            whole = magnitude(expr)
             # how much the whole moves per unit of each part, summed over the paths from the root
             weight: dict[sp.Basic, np.ndarray] = {}
             walk, steps = [(expr, np.ones(K))], 0
@@ -535,23 +572,66 @@ def _negligible(expr: sp.Expr, part: Part, mech) -> list[str]:
                     if not x.is_Atom:
                         walk.append((x, w * np.abs(value[e] * np.log(value[b]))))
                 else:
-                    walk.append((e.args[0], w * np.abs(ev(e.fdiff(1)))))
-    except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+                    walk.extend((a, w * slope(e, i)) for i, a in enumerate(e.args))
+            # each part with the weight of its place (a symbol used elsewhere too weighs more there)
+            candidates = []
+            for e in [e for e in weight if e not in opaque and not e.is_Atom]:
+                w = weight[e]
+                if e.is_Add:
+                    candidates += [(a, w) for a in e.args]
+                elif e.is_Pow and not e.args[1].is_Atom:
+                    candidates.append((e.args[1], w * np.abs(value[e] * np.log(value[e.args[0]]))))
+                elif not (e.is_Mul or e.is_Pow):
+                    candidates += [(a, w * slope(e, i)) for i, a in enumerate(e.args)]
+    except (TypeError, ValueError, ZeroDivisionError, OverflowError, sp.core.function.ArgumentIndexError):
         return []
     notes = []
-    for e in [e for e in weight if e not in opaque]:
-        parts = [a for a in e.args if not a.is_Atom] if e.is_Add else \
-            [e.args[1]] if e.is_Pow and not e.args[1].is_Atom else \
-            [e.args[0]] if isinstance(e, sp.Function) and not e.args[0].is_Atom else []
-        for a in parts:
-            effect = weight.get(a, 0.0) * np.abs(value[a])
-            ok = np.isfinite(whole) & (whole > 0) & np.isfinite(effect)
-            if ok.sum() >= K // 2 and np.all(effect[ok] <= NEGLIGIBLE * whole[ok]):
-                notes.append(f"the part {_short(a)} changes the whole by less than {NEGLIGIBLE:g} of it at every "
-                             "state tried (too small for sampling to see)")
-                if len(notes) >= 3:
-                    return notes
+    bounds = np.cumsum([0, *(len(next(iter(v.values()))) for v in sets)])
+    for a, wa in candidates:
+        effect = wa * (np.abs(value[a]) if a in value else abs(complex(a)))
+        small = (effect <= NEGLIGIBLE * whole) | ~np.isfinite(whole) | (whole <= 0) | ~np.isfinite(effect)
+        seen = np.isfinite(whole) & (whole > 0) & np.isfinite(effect)
+        unseen = any(seen[lo:hi].sum() >= (hi - lo) // 2 and small[lo:hi].all() for lo, hi in zip(bounds, bounds[1:]))
+        if unseen and not _proved_zero(a, mech):
+            notes.append(f"the part {_short(a)} changes the whole by less than {NEGLIGIBLE:g} of it at every "
+                         "state tried (too small for sampling to see)")
+            if len(notes) >= 3:
+                break
     return notes
+
+
+#: states the comparison samples (`lagrade.verdicts.checkers.base.Context.points`)
+SAMPLED_STATES = 24
+
+
+def comparison_states(free: list[sp.Symbol], mech, part: Part) -> list[dict[sp.Symbol, np.ndarray]]:
+    """The states at which the checkers compare a part, as arrays for the symbols ``free``: the
+    values' and equations' (``rng_for(problem, part)``), and the same with parameters shared by groups
+    of four (the Lagrangian's, `dynamics._grouped_points`). Symbols they do not sample (momenta, a
+    part's own names) get values of their own."""
+    from lagrade.compare.sampling import grouped, rng_for, sample_points
+
+    def base():
+        return sample_points(mech, SAMPLED_STATES, rng_for(mech.problem.id, part.name), extra=part.symbol_domains)
+
+    rng = rng_for(mech.problem.id, part.name, "negligible", "other")
+    out = []
+    for pts in (base(), grouped(base(), mech, part.symbols)):
+        values = dict(pts.values)
+        for p in mech.s.p:
+            values.setdefault(p, rng.uniform(-1.5, 1.5, SAMPLED_STATES))
+        out.append({s: np.broadcast_to(np.asarray(values[s] if s in values else rng.uniform(0.5, 1.5, SAMPLED_STATES),
+                                                  dtype=complex), (SAMPLED_STATES,)) for s in free})
+    return out
+
+
+def _proved_zero(e: sp.Basic, mech) -> bool:
+    """An unsimplified identity (``sin(a - b) - sin(a)*cos(b) + cos(a)*sin(b)``) is zero, not small."""
+    from lagrade.compare.symbolic import proves_all_zero
+
+    if not e.free_symbols:
+        return bool(e.is_zero)
+    return bool(proves_all_zero([e], 1.0, {p.name for p in mech.parameters if p.positive}))
 
 
 def _reality(expr: sp.Expr, part: Part, mech) -> None:

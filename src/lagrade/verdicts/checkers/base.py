@@ -33,7 +33,7 @@ class Context:
     refs: ReferenceCache
     accuracy: Accuracy = field(default_factory=lambda: ACCURACY["default"])
     symbolic_seconds: float = 2.0
-    points: int = 24
+    points: int = admit.SAMPLED_STATES
     #: more specific feedback: which term is missing or extra (never the reference itself)
     hints: bool = False
     credit: Credit = field(default_factory=Credit)

@@ -44,6 +44,7 @@ from lagrade.derive.reference import Mechanics, split_energy
 from lagrade.verdicts.result import PartResult
 from lagrade.compare.sampling import (
     Points,
+    grouped,
     rng_for,
     sample_points,
     state_arrays,
@@ -58,10 +59,7 @@ from lagrade.problem.symbols import T
 def _grouped_points(ctx: Context, mech: Mechanics, part: Part, groups: int = 6, per_group: int = 4):
     """Points in groups sharing parameters and time, so 'constant' can be told from 'state-dependent'."""
     pts = sample_points(mech, groups * per_group, rng_for(ctx.problem.id, part.name), extra=part.symbol_domains)
-    for sym in [*mech.params, T, *(sp.Symbol(s) for s in part.symbols)]:
-        v = pts.values[sym]
-        pts.values[sym] = np.repeat(v[::per_group], per_group)
-    return pts, groups, per_group
+    return grouped(pts, mech, part.symbols, per_group), groups, per_group
 
 
 def _trajectory_inits(ctx: Context, mech: Mechanics, part: Part):
@@ -398,6 +396,36 @@ def _along_motion(ctx: Context, mech: Mechanics, part: Part, traj: Comparison | 
     return (an, pts, argv, truth) if an.wrong else None
 
 
+#: sampled states at which equations agreeing in floating point are evaluated again in ball
+#: arithmetic before they are accepted (`_exact_refutation`)
+EXACT_STATES = 3
+EXACTLY = ("at an exact state, evaluated in ball arithmetic: the difference is smaller than floating point "
+           "can show, but it is not zero")
+
+
+def _exact_refutation(mech: Mechanics, part: Part, rows: list[sp.Expr], pts, what: str,
+                      traj: Comparison | None) -> PartResult | None:
+    """(``what``: the rows' name, with ``{i}`` for the row's number.) Equations that agree with the true ones at every sampled state in floating point (within the
+    preset's tolerance) are evaluated again at a few of those states, taken as exact rationals, with
+    the true accelerations solved in ball arithmetic (`lagrade.compare.certify`, 128 bits): rows that
+    hold for the true motion enclose zero there whatever their form; an enclosure that excludes zero
+    refutes them, with its certificate. It catches what a difference below the tolerance hides (an L
+    term whose Lagrange equations differ by 1e-10, `(theta + 10001)/(theta + 10000)`), which the
+    comparison in floating point cannot: a wrong answer below both this and the screen's
+    negligible-part rule (`admit._negligible`) would need a difference under 1e-35."""
+    if machinery(mech).switching or admit.pending():  # a flagged answer is refused, or proved, for its flag
+        return None
+    for k in range(min(EXACT_STATES, pts.K)):
+        at = {s: float(np.real(v[k])) if np.ndim(v) else float(np.real(v)) for s, v in pts.values.items()}
+        for i, row in enumerate(rows):
+            name = what.format(i=i + 1)
+            cert = certify(f"{name} at the true accelerations", row, at, mech=mech, truth=True)
+            if cert is not None:
+                admit.witness(cert)
+                return _wrong(part, 0.0, f"Incorrect: {name} does not hold for the true motion {EXACTLY}.", traj)
+    return None
+
+
 def _motion_refutation(ctx: Context, mech: Mechanics, part: Part, traj: Comparison | None, rows: list[sp.Expr],
                        phase: bool, what: str) -> PartResult | None:
     """An L or H accepted at the sampled states whose equations (Lagrange's or Hamilton's) do not hold
@@ -478,6 +506,8 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
             lambda: _trajectory_lagrange(ctx, mech, part, student_acc, student_rows))
         off = None if proof else _motion_refutation(ctx, mech, part, traj, student_rows(), False,
                                                     "the Lagrange equations your L gives")
+        if off is None and not proof:
+            off = _exact_refutation(mech, part, student_rows(), pts, "Lagrange's equation {i} of your L", traj)
         if off is not None:
             return off
         args = [*mech.s.q, *mech.s.qd, T, *mech.params]
@@ -706,7 +736,8 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
                                lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows))
         off = None if proof else _along_motion(ctx, mech, part, traj, compiled, list(mech.names))
         if off is None:
-            return _decide(ctx, part, proof, traj)
+            exact = None if proof else _exact_refutation(mech, part, rows, pts, "your equation {i}", traj)
+            return exact if exact is not None else _decide(ctx, part, proof, traj)
         an, pts, argv, truth = off   # agree on the box, not where the motion goes: decided there
         where = f" {ALONG_MOTION.replace('the true motion', 'it')}"
     _certify_rows(mech, rows, an, compiled, argv, truth, pts, "accelerations", truth=True)
