@@ -583,7 +583,8 @@ def _negligible(expr: sp.Expr, part: Part, mech) -> list[str]:
                     candidates.append((e.args[1], w * np.abs(value[e] * np.log(value[e.args[0]]))))
                 elif not (e.is_Mul or e.is_Pow):
                     candidates += [(a, w * slope(e, i)) for i, a in enumerate(e.args)]
-    except (TypeError, ValueError, ZeroDivisionError, OverflowError, sp.core.function.ArgumentIndexError):
+    except (TypeError, ValueError, ZeroDivisionError, OverflowError, RecursionError,
+            sp.core.function.ArgumentIndexError):  # what cannot be weighed is compared, and judged, elsewhere
         return []
     notes = []
     bounds = np.cumsum([0, *(len(next(iter(v.values()))) for v in sets)])
