@@ -405,11 +405,11 @@ EXACTLY = ("at an exact state, evaluated in ball arithmetic: the difference is s
 
 def _exact_refutation(mech: Mechanics, part: Part, rows: list[sp.Expr], pts, what: str,
                       traj: Comparison | None) -> PartResult | None:
-    """(``what``: the rows' name, with ``{i}`` for the row's number.) Equations that agree with the true ones at every sampled state in floating point (within the
+    """Equations that agree with the true ones at every sampled state in floating point (within the
     preset's tolerance) are evaluated again at a few of those states, taken as exact rationals, with
     the true accelerations solved in ball arithmetic (`lagrade.compare.certify`, 128 bits): rows that
     hold for the true motion enclose zero there whatever their form; an enclosure that excludes zero
-    refutes them, with its certificate. It catches what a difference below the tolerance hides (an L
+    refutes them, with its certificate (``what`` names a row, ``{i}`` its number). It catches what a difference below the tolerance hides (an L
     term whose Lagrange equations differ by 1e-10, `(theta + 10001)/(theta + 10000)`), which the
     comparison in floating point cannot: a wrong answer below both this and the screen's
     negligible-part rule (`admit._negligible`) would need a difference under 1e-35."""
