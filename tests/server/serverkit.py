@@ -4,6 +4,7 @@ of its own: tests/bulk has a conftest too, and one name would shadow the other).
 from __future__ import annotations
 
 import re
+import time
 import struct
 import tomllib
 import zlib
@@ -62,6 +63,16 @@ def sign_in(app, client, student: str) -> str:
     r = client.post("/login", data={"token": token, "login_csrf": form}, follow_redirects=False)
     assert r.status_code == 303, r.text
     return csrf_token(app.state.server.secret, client.cookies[SESSION_COOKIE])
+
+
+def graded(client, headers, sid: int, seconds: float):
+    """The attempt's response (GET /api/v1/submissions/<id>) once graded, or the last one after ``seconds``."""
+    end = time.monotonic() + seconds
+    while True:
+        r = client.get(f"/api/v1/submissions/{sid}", headers=headers)
+        if r.status_code != 202 or time.monotonic() > end:
+            return r
+        time.sleep(0.1)
 
 
 def bearer(app, student: str) -> dict[str, str]:

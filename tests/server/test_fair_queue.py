@@ -8,7 +8,7 @@ import time
 
 import pytest
 from fastapi.testclient import TestClient
-from serverkit import REPO, bearer, make_config
+from serverkit import REPO, bearer, graded, make_config
 
 from lagrade.uses.server.app import create_app
 from lagrade.uses.server.grading import GradingQueue
@@ -77,7 +77,7 @@ def test_a_right_answer_is_graded_within_5_s_behind_another_students_ten_loops(t
     right = (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes()
     with TestClient(app) as client:
         carol = bearer(app, "carol")  # one check first, graded once the graders are warm (bounded)
-        _graded(client, carol, client.post("/api/v1/problems/12.14/check", headers=carol,
+        graded(client, carol, client.post("/api/v1/problems/12.14/check", headers=carol,
                                            files={"file": ("answer.py", right + b"# warm")}).json()["submission_id"], 120)
         alice, bob = bearer(app, "alice"), bearer(app, "bob")
         for i in range(10):
@@ -86,7 +86,7 @@ def test_a_right_answer_is_graded_within_5_s_behind_another_students_ten_loops(t
         sent = time.monotonic()
         sid = client.post("/api/v1/problems/12.14/check", headers=bob,
                           files={"file": ("answer.py", right)}).json()["submission_id"]
-        r = _graded(client, bob, sid, 30)
+        r = graded(client, bob, sid, 30)
         waited = time.monotonic() - sent
         assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
         assert waited < 5, f"bob's right answer waited {waited:.1f} s behind alice's loops"
@@ -102,7 +102,7 @@ def test_a_spare_grader_takes_a_right_answer_while_two_students_loops_hold_the_o
     with TestClient(app) as client:
         carol = bearer(app, "carol")
         for i in range(3):  # warm: each grader has graded once (bounded)
-            _graded(client, carol, client.post("/api/v1/problems/12.14/check", headers=carol, files={
+            graded(client, carol, client.post("/api/v1/problems/12.14/check", headers=carol, files={
                 "file": ("answer.py", right + b"# warm %d" % i)}).json()["submission_id"], 120)
         for who in ("alice", "dave"):
             assert client.post("/api/v1/problems/12.14/check", headers=bearer(app, who),
@@ -112,20 +112,10 @@ def test_a_spare_grader_takes_a_right_answer_while_two_students_loops_hold_the_o
         sent = time.monotonic()
         sid = client.post("/api/v1/problems/12.14/check", headers=bob,
                           files={"file": ("answer.py", right)}).json()["submission_id"]
-        r = _graded(client, bob, sid, 30)
+        r = graded(client, bob, sid, 30)
         waited = time.monotonic() - sent
         assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
         assert waited < 5, f"bob's right answer waited {waited:.1f} s behind two loops"
-
-
-def _graded(client, headers, sid: int, seconds: float):
-    """The attempt's response once graded, or the last one after ``seconds``."""
-    end = time.monotonic() + seconds
-    while True:
-        r = client.get(f"/api/v1/submissions/{sid}", headers=headers)
-        if r.status_code != 202 or time.monotonic() > end:
-            return r
-        time.sleep(0.1)
 
 
 def test_checks_sent_at_once_are_counted_before_they_are_stored(quiet_app):

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 from fastapi.testclient import TestClient
-from serverkit import REPO, bearer, golden, make_config
+from serverkit import REPO, bearer, golden, graded, make_config
 
 from lagrade.uses.bulk.worker import LOWERED_NICE, _proc_table, _tree
 from lagrade.uses.server.app import create_app
@@ -54,15 +54,6 @@ def _grading(queue, sid: int, seconds: float):
     return None
 
 
-def _wait_graded(client, headers, sid: int, seconds: float):
-    end = time.monotonic() + seconds
-    while True:
-        r = client.get(f"/api/v1/submissions/{sid}", headers=headers)
-        if r.status_code != 202 or time.monotonic() > end:
-            return r
-        time.sleep(0.1)
-
-
 @pytest.mark.slow
 @pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads /proc")
 def test_a_loop_over_the_budget_runs_at_nice_19_and_keeps_its_verdict(tmp_path):
@@ -87,7 +78,7 @@ def test_a_loop_over_the_budget_runs_at_nice_19_and_keeps_its_verdict(tmp_path):
             assert all(f"nice {LOWERED_NICE}" in _autogroup(p) for p in children if Path(f"/proc/{p}").exists())
             assert _autogroup(g.pid) == _autogroup(os.getpid()) and _autogroup(g.pid).endswith("nice 0")
         assert nice(g.pid) == 0 and not g.retire
-        r = _wait_graded(client, alice, sid, 120)
+        r = graded(client, alice, sid, 120)
         assert r.status_code == 200
         body = r.json()
         # its CPU bound, or (on a machine whose CPU others keep busy, where nice 19 gets next to
@@ -119,7 +110,7 @@ def test_a_grader_over_the_budget_runs_at_nice_19_and_is_replaced_after(tmp_path
         lowered = [p for p in g.own_pids if Path(f"/proc/{p}").exists()]
         assert g.pid in lowered and len(lowered) >= 2  # the grader and its zygote
         assert all(nice(p) == LOWERED_NICE for p in lowered)
-        r = _wait_graded(client, alice, sid, 150)
+        r = graded(client, alice, sid, 150)
         assert r.status_code == 200 and r.json()["state"] == "graded"
         deadline = time.monotonic() + 10
         while any(h is g for h in queue.graders) and time.monotonic() < deadline:
@@ -129,7 +120,7 @@ def test_a_grader_over_the_budget_runs_at_nice_19_and_is_replaced_after(tmp_path
         right = (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes()
         sid2 = client.post("/api/v1/problems/12.14/check", headers=alice,
                            files={"file": ("answer.py", right)}).json()["submission_id"]
-        r = _wait_graded(client, alice, sid2, 120)
+        r = graded(client, alice, sid2, 120)
         assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
         assert [nice(h.pid) for h in queue.graders] == [0] * len(queue.graders)
         assert sid2 not in queue.lowered
@@ -154,7 +145,7 @@ def test_honest_answers_are_never_lowered(tmp_path):
                             files={"file": (f"answer{path.suffix}", path.read_bytes())})
             assert r.status_code in (200, 202), r.text
             sids.append(r.json()["submission_id"])
-            assert _wait_graded(client, bob, sids[-1], 120).status_code == 200
+            assert graded(client, bob, sids[-1], 120).status_code == 200
             assert all(nice(h.pid) == 0 for h in queue.graders if h.proc.poll() is None)
         assert not set(queue.lowered) & set(sids)
         loop = client.post("/api/v1/problems/12.14/check", headers=bearer(app, "alice"),
@@ -189,12 +180,12 @@ def test_a_slow_grading_without_a_place_is_stopped_and_graded_once_later(tmp_pat
         sent = time.monotonic()
         sid = client.post("/api/v1/problems/12.14/check", headers=bob,
                           files={"file": ("answer.py", right)}).json()["submission_id"]
-        r = _wait_graded(client, bob, sid, 60)
+        r = graded(client, bob, sid, 60)
         assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
         assert time.monotonic() - sent < 10, "the right answer waited for the loops"
         assert len(queue.graders) <= 3
         for who, loop in loops.items():
-            body = _wait_graded(client, bearer(app, who), loop, 150).json()
+            body = graded(client, bearer(app, who), loop, 150).json()
             assert body["state"] == "graded" and body["status"] == "timeout" and body["score"] == 0, body
             assert "ran longer than 2 s of CPU time" in " ".join(body["problems"]) or \
                 "ran longer than 12 s" in " ".join(body["problems"])
