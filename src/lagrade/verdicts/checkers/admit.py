@@ -23,6 +23,7 @@ that still rests on an unproved flagged expression. The rule, in words, is in do
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable
 from contextvars import ContextVar
 from dataclasses import dataclass, field
@@ -62,6 +63,8 @@ NEGLIGIBLE = 1e-5
 #: operations beyond which an expression is not weighed part by part but needs a proof (no honest
 #: answer comes near; weighing costs about a microsecond an operation)
 NEGLIGIBLE_NODES = 100_000
+#: seconds the proofs that small parts are exactly zero may take, for one expression together
+ZERO_PROOF_SECONDS = 2.0
 
 
 class Refuted(Exception):
@@ -587,13 +590,14 @@ def _negligible(expr: sp.Expr, part: Part, mech) -> list[str]:
             sp.core.function.ArgumentIndexError):  # what cannot be weighed is compared, and judged, elsewhere
         return []
     notes = []
+    proof_deadline = time.monotonic() + ZERO_PROOF_SECONDS  # shared: many small parts cost no more
     bounds = np.cumsum([0, *(len(next(iter(v.values()))) for v in sets)])
     for a, wa in candidates:
         effect = wa * (np.abs(value[a]) if a in value else abs(complex(a)))
         small = (effect <= NEGLIGIBLE * whole) | ~np.isfinite(whole) | (whole <= 0) | ~np.isfinite(effect)
         seen = np.isfinite(whole) & (whole > 0) & np.isfinite(effect)
         unseen = any(seen[lo:hi].sum() >= (hi - lo) // 2 and small[lo:hi].all() for lo, hi in zip(bounds, bounds[1:]))
-        if unseen and not _proved_zero(a, mech):
+        if unseen and not _proved_zero(a, mech, proof_deadline):
             notes.append(f"the part {_short(a)} changes the whole by less than {NEGLIGIBLE:g} of it at every "
                          "state tried (too small for sampling to see)")
             if len(notes) >= 3:
@@ -626,13 +630,15 @@ def comparison_states(free: list[sp.Symbol], mech, part: Part) -> list[dict[sp.S
     return out
 
 
-def _proved_zero(e: sp.Basic, mech) -> bool:
-    """An unsimplified identity (``sin(a - b) - sin(a)*cos(b) + cos(a)*sin(b)``) is zero, not small."""
+def _proved_zero(e: sp.Basic, mech, deadline: float) -> bool:
+    """An unsimplified identity (``sin(a - b) - sin(a)*cos(b) + cos(a)*sin(b)``) is zero, not small;
+    the proofs of one expression's parts share :data:`ZERO_PROOF_SECONDS` (what is left unproved is flagged)."""
     from lagrade.compare.symbolic import proves_all_zero
 
     if not e.free_symbols:
         return bool(e.is_zero)
-    return bool(proves_all_zero([e], 1.0, {p.name for p in mech.parameters if p.positive}))
+    left = deadline - time.monotonic()
+    return left > 0 and bool(proves_all_zero([e], min(1.0, left), {p.name for p in mech.parameters if p.positive}))
 
 
 def _reality(expr: sp.Expr, part: Part, mech) -> None:
