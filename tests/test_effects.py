@@ -257,3 +257,48 @@ def test_grading_integrates_an_autonomous_scene_without_t_or_events():
     generic = lagrange_inputs(ctx, mech, part, lambda: _lagrange_solver(mech.L, mech, part),
                               lambda: mech.lagrange_rows(mech.L), everything=True)
     assert generic.reference.timed is True and not generic.switching
+
+
+@pytest.mark.parametrize("pid", ["12.43", "12.14", "ex12.8"])
+def test_hamilton_form_rates_are_the_scene_models(pid):
+    """Hamilton's equations grading integrates come from the same effect-built model as the Lagrange
+    form (`SceneModel.hamilton_rates`, no t for an autonomous scene) and equal the derivation's own
+    (q', p') at sampled states."""
+    import numpy as np
+
+    from lagrade.compare.sampling import rng_for, sample_points, state_arrays
+    from lagrade.compare.scene_model import scene_model
+    from lagrade.derive.effects import machinery
+    from lagrade.problem.library import load_problem
+    from lagrade.verdicts.grade import references
+
+    problem = load_problem(pid)
+    mech = references(problem)[problem.systems[0].key]
+    model = scene_model(mech)
+    q, qd, _, params = state_arrays(mech, sample_points(mech, 4, rng_for(pid, "hamilton-model")))
+    t = np.full(q.shape[1], 0.3)
+    p = mech.momenta(q, qd, t, params)
+    got = model.hamilton_rates(params)(0.3, np.concatenate([q, p]))
+    np.testing.assert_allclose(got, mech.hamilton_rates(q, p, t, params), rtol=1e-12, atol=1e-12)
+    velocities, forces = model._hamilton
+    timed = machinery(mech).explicit_time
+    assert forces.nargs == len(model.args) == 2 * len(mech.s.q) + timed + len(mech.params)
+
+
+def test_a_hamilton_part_integrates_the_scene_model(monkeypatch):
+    """The trajectory check of a Hamilton-form part asks the scene's model for the reference rates
+    (before: `Mechanics.hamilton_rates`, compiled with t whatever the scene declared)."""
+    import sympy as sp
+
+    import lagrade
+    from lagrade.compare.scene_model import SceneModel
+
+    asked = []
+    original = SceneModel.hamilton_rates
+    monkeypatch.setattr(SceneModel, "hamilton_rates", lambda self, params: asked.append(self) or original(self, params))
+    m, g, l, t, p_theta = sp.symbols("m g l t p_theta")
+    theta = sp.Function("theta")(t)
+    result = lagrade.check("12.43", H=p_theta**2 / (2 * m * l**2) - sp.Rational(3, 2) * m * g * l * sp.cos(theta))
+    assert asked, "the Hamilton-form trajectory check did not use the scene model"
+    (H,) = [p for p in result.parts if p.part == "H"]
+    assert H.verdict == "incorrect"

@@ -12,9 +12,10 @@ effects call for, and nothing else:
 - the multipliers (constraint forces) only when ``constraint_force`` is declared;
 - contact-loss events (a multiplier reaching zero) only for ``unilateral_contact``.
 
-`scene_model(mech)` is the one model of a scene grading integrates (its second-order parts): a scene
-that declares no switching runs its `SceneModel.compiled_rates` (one compiled call of exactly these
-arguments) and declared events; a switching scene runs a fresh `SceneModel` per run (it keeps branches).
+`scene_model(mech)` is the one model of a scene grading integrates: a scene that declares no switching
+runs its `SceneModel.compiled_rates` (one compiled call of exactly these arguments) and declared events,
+or `SceneModel.hamilton_rates` in (q, p) for a Hamilton-form part; a switching scene runs a fresh
+`SceneModel` per run (it keeps branches).
 
 ``SceneModel(mech, everything=True)`` builds all of it regardless of the declarations: the
 `benchmarks/effects.py` baseline that measures what the unused machinery costs.
@@ -282,6 +283,7 @@ class SceneModel(Switching):
         self._force = compile_exprs(conservative, base)
         self.branches: Branches | None = None
         self._solve: Vectorized | None = None
+        self._hamilton: tuple[Vectorized, Vectorized] | None = None
         self._Q = None
         self._switch = None
         if declared.velocity_forces:
@@ -366,6 +368,28 @@ class SceneModel(Switching):
             force = list(self.mech.force)   # = conservative + Q: no branch to keep apart
             self._solve = compile_linear_solve([list(self.mech.mass.row(i)) for i in range(n)], force, self.args)
         return CompiledRates(self._solve, self.dim, params, copied=self.n, timed=self.time_arg)
+
+    def hamilton_rates(self, params: np.ndarray):
+        """``(t, Y) -> Y'`` of Hamilton's equations, Y = (q, p) of shape (2n, K): q' from p = dL/dq'
+        solved numerically (L is quadratic in the velocities), p' = dL/dq + Q. Compiled with the same
+        arguments as `compiled_rates` (no t for an autonomous scene): what grading integrates for a
+        Hamilton-form part of a scene without switching."""
+        n, s, L = self.n, self.mech.s, self.mech.L
+        if self._hamilton is None:
+            zero = {v: 0 for v in s.qd}
+            A = [[sp.diff(L, a, b).xreplace(zero) for b in s.qd] for a in s.qd]
+            rhs = [p - sp.diff(L, v).xreplace(zero) for p, v in zip(s.p, s.qd)]
+            timed = [T] if self.time_arg else []
+            self._hamilton = (compile_linear_solve(A, rhs, [*s.q, *s.p, *timed, *self.mech.params]),
+                              compile_exprs([sp.diff(L, q) + Qi for q, Qi in zip(s.q, self.mech.Q)], self.args))
+        velocities, forces = self._hamilton
+
+        def f(t: float, Y: np.ndarray) -> np.ndarray:
+            timed = [np.full(Y.shape[1], t)] if self.time_arg else []
+            qd = velocities(*Y[:n], *Y[n:], *timed, *params)
+            return np.concatenate([qd, forces(*Y[:n], *qd, *timed, *params)])
+
+        return f
 
     def multipliers(self, Y: np.ndarray, t, params: np.ndarray) -> np.ndarray:
         """Constraint forces along the motion, (len(multiplier_names), K)."""

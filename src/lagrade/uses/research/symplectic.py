@@ -125,10 +125,8 @@ def implicit_midpoint(rates: Callable[[float, np.ndarray], np.ndarray], y0: np.n
 
 
 def hamilton_rates(mech: Mechanics, params: np.ndarray):
-    """(t, Y=(q, p)) -> (q', p') of the scene, batched: the right-hand side for `implicit_midpoint`."""
-    n = len(mech.names)
+    """(t, Y=(q, p)) -> (q', p') of the scene, batched: the right-hand side for `implicit_midpoint`,
+    the model grading integrates (`SceneModel.hamilton_rates`)."""
+    from lagrade.compare.scene_model import scene_model
 
-    def f(t: float, Y: np.ndarray) -> np.ndarray:
-        return mech.hamilton_rates(Y[:n], Y[n:], np.full(Y.shape[1], t), params)
-
-    return f
+    return scene_model(mech).hamilton_rates(params)

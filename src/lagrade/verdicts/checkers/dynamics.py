@@ -168,9 +168,9 @@ def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rate
         stu, ref, events, stu_events = models
         key = ("hamilton-switching", tuple(part.symbols))
     else:
-        def ref(t: float, y: np.ndarray) -> np.ndarray:
-            return mech.hamilton_rates(y[:n], y[n:], np.full(y.shape[1], t), params)
+        from lagrade.compare.scene_model import scene_model
 
+        ref = scene_model(mech).hamilton_rates(params)
         stu = CompiledRates(student_rates(), 2 * n, constants)
         events, stu_events, key = [], None, ("hamilton", tuple(part.symbols))
     comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy, events=events,
