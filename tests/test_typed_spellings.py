@@ -48,3 +48,15 @@ def test_the_help_before_typing_names_spellings_that_are_read(p1214):
     assert "x^2 or x**2" in said and read(p1214, "m1^2") == read(p1214, "m1**2")
     assert "Eq(lhs, rhs) or lhs == rhs" in said
     assert read(p1214, "Eq(m1, m2)") == read(p1214, "m1 == m2")
+
+
+def test_lagrade_show_says_how_to_type_before_the_first_try(tmp_path):
+    """`lagrade show` (and `show --server`, the same text) ends with the typing help, so a student
+    writing answer.toml reads the spellings before an error has to name them."""
+    from click.testing import CliRunner
+
+    from lagrade.cli import main
+
+    out = CliRunner().invoke(main, ["show", "12.14"]).output
+    assert "Typing an answer (answer.toml, the course page):" in out
+    assert "theta1' (also theta1_d, theta1_dot or theta1dot)" in out

@@ -57,6 +57,9 @@ def show_text(p: Problem) -> str:
             detail += (f"; one version of {part.version_of}, with {', '.join(others)}: both are graded, and a value "
                        f"bound to {part.version_of} counts for the version whose coordinates it uses")
         out.append(f"  {'':<12}   -> {detail}")
+    typing = typing_help(p)
+    if typing:  # answer.toml and the course page are typed: the spellings before the first try
+        out += ["", typing.replace("Typing an answer:", "Typing an answer (answer.toml, the course page):", 1)]
     return "\n".join(out)
 
 
