@@ -7,7 +7,8 @@ runs in the jail). ``no-credit``: the target part's score is 0 and its verdict `
 ``invalid``; ``full-marks``: its score is its maximum. The ``hints`` family runs with ``--hints``, and
 its feedback must not match the file's ``# leak:`` regular expression (issue 31, item 6). Every file
 runs under ``default``; the first answer.py and answer.toml of each family also under ``strict`` and
-``fast``. About 10 s on 2 cores: the fast tier.
+``fast``. The fast tier runs the honest controls and each family's first two files under ``default``
+(about 15 s on 2 cores); ``pytest -m slow tests/security/verdicts`` runs the rest.
 
 The table for a before/after report: ``python tests/security/verdicts/verdicts_harness.py --markdown``.
 """
@@ -44,11 +45,18 @@ def _check(case, accuracy):
         f"got {out.verdict} {out.score:g}/{out.max_score:g} by {out.method}: {out.feedback}")
 
 
-@pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
+#: The fast tier: every honest control, and the first answer.py and answer.toml of each family; the
+#: slow tier runs every other file (a wrong answer flagged by the screen pays a failed proof, ~2 s).
+FAST = {c.name for c in SUBSET} | {c.name for c in CASES if c.family == "honest"}
+
+
+@pytest.mark.parametrize("case", [pytest.param(c, id=c.name, marks=() if c.name in FAST else pytest.mark.slow)
+                                  for c in CASES])
 def test_default(case):
     _check(case, "default")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("accuracy", ["strict", "fast"])
 @pytest.mark.parametrize("case", SUBSET, ids=[c.name for c in SUBSET])
 def test_other_presets(case, accuracy):

@@ -155,6 +155,9 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
                 admit.proved(student)
                 return False, "numeric", BEYOND
             return True, "numeric", ""
+        if flagged and _differs_beyond(ctx, part, mech, student, ref):  # a certified refutation costs
+            admit.proved(student)                                          # less than a proof that fails
+            return False, "numeric", BEYOND
         sym_ref = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
         proof = proves_zero(student - sym_ref, ctx.symbolic_seconds, ctx.positive) if sym_ref is not None else None
         if proof:
