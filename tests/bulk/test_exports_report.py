@@ -163,6 +163,22 @@ def test_verdicts_to_review_reach_the_class_page_and_tracebacks_no_student_page(
 
 
 
+def test_the_gradebook_keeps_each_rejections_certificate_and_no_student_page_shows_it(graded, tmp_path):
+    """A rejection at sampled states is proved in ball arithmetic; its certificate (the exact point and
+    the enclosure) is the instructor's: stored with the part in the gradebook, never on a student's page
+    (the enclosure is a difference from the reference)."""
+    tmp, db, _ = graded
+    with sqlite3.connect(db) as con:
+        rows = dict(con.execute("SELECT part, certificate FROM parts WHERE student = 'bob' AND problem = '12.43'"))
+        right = con.execute("SELECT certificate FROM parts WHERE student = 'ada' AND problem = '12.43'").fetchall()
+    assert "excludes 0, at the exact point" in rows["H"] and "excludes 0" in rows["eom"], rows
+    assert right and all(c is None for (c,) in right)
+    folder = _report(db, tmp_path / "report")
+    for page in folder.rglob("*.html"):
+        assert "excludes 0" not in page.read_text(), page
+
+
+
 PNG = b"\x89PNG\r\n\x1a\n"
 
 

@@ -98,6 +98,7 @@ class Grader:
                 for p in result.parts:
                     row = p.model_dump(exclude={"read_as"})
                     row["detail"] = p.detail  # the traceback of an `error`: for the instructor's gradebook only
+                    row["certificate"] = p.certificate  # the proof of a rejection: the gradebook's, never shown
                     if p.part in loaded.values:
                         row["answer_text"], row["answer_mathml"] = show(loaded.values[p.part])
                     parts.append(row)

@@ -79,6 +79,7 @@ parts = Table(
     Column("score", Float, nullable=False), Column("max_score", Float, nullable=False),
     Column("method", String(20), nullable=False), Column("feedback", Text, nullable=False),
     Column("answer_text", Text), Column("answer_mathml", Text), Column("review", Text), Column("detail", Text),
+    Column("certificate", Text),
     Column("file_hash", String(64), nullable=False), Column("grader_version", String(50), nullable=False),
     ForeignKeyConstraint(["student", "problem"], ["submissions.student", "submissions.problem"], ondelete="CASCADE"),
 )
@@ -539,7 +540,7 @@ class Database:
                      "score": p["score"], "max_score": p["max_score"], "method": p["method"],
                      "feedback": p["feedback"], "answer_text": p.get("answer_text"),
                      "answer_mathml": p.get("answer_mathml"), "review": p.get("review"), "detail": p.get("detail"),
-                     "file_hash": row.file_hash,
+                     "certificate": p.get("certificate"), "file_hash": row.file_hash,
                      "grader_version": row.grader_version} for p in result["parts"]])
             c.execute(insert(grade_log).values(student=row.student, problem=row.problem, file_hash=row.file_hash,
                                                grading_hash=row.grading_hash, grader_version=row.grader_version,
