@@ -133,3 +133,25 @@ def test_the_exact_re_check_refutes_what_the_trajectories_would_under_every_pres
         part = _eom_exact(lagrade.check("12.14", _perturbed_g(tmp_path, SMALL), accuracy=accuracy))
         assert part.verdict == "incorrect" and "at an exact state" in part.feedback, (accuracy, part.feedback)
         assert part.certified is True, part.review
+
+
+@pytest.mark.parametrize("accuracy", ["fast", "default", "strict"])
+def test_the_exact_re_check_refutes_an_H_whose_rates_are_off_below_every_tolerance(accuracy, monkeypatch):
+    """12.43's H plus m*g*l*(theta + 100001)/(theta + 100000): large in value, its rates off by about
+    1e-10, below every preset's sampled-state tolerance and the trajectories'. With the screen's
+    negligible-part rule off, the exact re-check alone refutes the H and the Hamilton's equations it
+    gives (without it both got full marks under fast and default), certified."""
+    import sympy as sp
+
+    from lagrade.verdicts.checkers import admit
+
+    monkeypatch.setattr(admit, "_negligible", lambda *a, **k: [])
+    t = sp.Symbol("t")
+    m, l, g = sp.symbols("m l g", positive=True)
+    theta, p = sp.Function("theta")(t), sp.Function("p_theta")(t)
+    H = p**2 / (2 * m * l**2) - m * g * l * sp.cos(theta) + m * g * l * (theta + 100001) / (theta + 100000)
+    hamilton = [sp.Eq(theta.diff(t), H.diff(p)), sp.Eq(p.diff(t), -H.diff(theta))]
+    parts = {x.part: x for x in lagrade.check("12.43", H=H, hamilton=hamilton, accuracy=accuracy).parts}
+    for name in ("H", "hamilton"):
+        assert parts[name].score == 0 and parts[name].verdict == "incorrect", (name, parts[name].feedback)
+    assert "at an exact state" in parts["hamilton"].feedback and parts["hamilton"].certified is True

@@ -404,7 +404,7 @@ EXACTLY = ("at an exact state, evaluated in ball arithmetic: the difference is s
 
 
 def _exact_refutation(mech: Mechanics, part: Part, rows: list[sp.Expr], pts, what: str,
-                      traj: Comparison | None) -> PartResult | None:
+                      traj: Comparison | None, phase: bool = False) -> PartResult | None:
     """Equations that agree with the true ones at every sampled state in floating point (within the
     preset's tolerance) are evaluated again at a few of those states, taken as exact rationals, with
     the true accelerations solved in ball arithmetic (`lagrade.compare.certify`, 128 bits): rows that
@@ -412,14 +412,16 @@ def _exact_refutation(mech: Mechanics, part: Part, rows: list[sp.Expr], pts, wha
     refutes them, with its certificate (``what`` names a row, ``{i}`` its number). It catches what a difference below the tolerance hides (an L
     term whose Lagrange equations differ by 1e-10, `(theta + 10001)/(theta + 10000)`), which the
     comparison in floating point cannot: a wrong answer below both this and the screen's
-    negligible-part rule (`admit._negligible`) would need a difference under 1e-35."""
+    negligible-part rule (`admit._negligible`) would need a difference under 1e-35. ``phase``: the
+    rows are Hamilton's equations, evaluated at (q, p) with the true rates q', p'."""
     if machinery(mech).switching or admit.pending():  # a flagged answer is refused, or proved, for its flag
         return None
     for k in range(min(EXACT_STATES, pts.K)):
         at = {s: float(np.real(v[k])) if np.ndim(v) else float(np.real(v)) for s, v in pts.values.items()}
         for i, row in enumerate(rows):
             name = what.format(i=i + 1)
-            cert = certify(f"{name} at the true accelerations", row, at, mech=mech, truth=True)
+            cert = certify(f"{name} at the true {'rates' if phase else 'accelerations'}", row, at, mech=mech,
+                           **({"phase": True} if phase else {"truth": True}))
             if cert is not None:
                 admit.witness(cert)
                 return _wrong(part, 0.0, f"Incorrect: {name} does not hold for the true motion {EXACTLY}.", traj)
@@ -1052,6 +1054,9 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
         proof, traj = _confirm(ctx, prove, lambda: _trajectory_hamilton(ctx, mech, part, student_rates, student_rows))
         off = None if proof else _motion_refutation(ctx, mech, part, traj, student_rows(), True,
                                                     "Hamilton's equations your H gives")
+        if off is None and not proof:
+            off = _exact_refutation(mech, part, student_rows(), pts, "Hamilton's equation {i} of your H", traj,
+                                    phase=True)
         if off is not None:
             return off
         note = "" if np.all(np.abs(diff) <= tol) else "It differs from the usual H by a function of t only."
@@ -1153,7 +1158,8 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
         traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, lambda: rows))
         off = _along_motion(ctx, mech, part, traj, compiled, labels, phase=True)
         if off is None:
-            return _decide(ctx, part, None, traj)
+            exact = _exact_refutation(mech, part, rows, pts, "your equation {i}", traj, phase=True)
+            return exact if exact is not None else _decide(ctx, part, None, traj)
         an, pts, _, truth = off   # agree on the box, not where the motion goes: decided there
         where = f" {ALONG_MOTION.replace('the true motion', 'it')}"
     _certify_rows(mech, rows, an, compiled, pts.args(args), truth, pts, "rates", phase=True)
