@@ -194,3 +194,23 @@ def test_a_grader_gives_a_value_it_graded_before_the_verdict_it_got():
         assert again["parts"] == first["parts"] and again["score"] == first["score"] == first["max_score"]
     finally:
         grader.close()
+
+
+def test_an_answers_child_is_killed_only_while_its_parent_is_the_one_seen():
+    """The server stops a slow grading by killing its answer's children, found by one walk of /proc;
+    a pid reused since then must not be signalled: the kill goes through a pidfd opened before the
+    process's parent is checked again."""
+    from lagrade.uses.bulk.worker import _kill_if_child_of
+
+    child = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
+    try:
+        _kill_if_child_of(child.pid, parent=os.getpid() + 1)  # not the parent the walk saw: left alone
+        time.sleep(0.2)
+        assert child.poll() is None
+        _kill_if_child_of(child.pid, parent=os.getpid())
+        assert child.wait(timeout=10) == -9
+        _kill_if_child_of(child.pid, parent=os.getpid())  # gone (a zombie reaped): nothing to do, no error
+    finally:
+        if child.poll() is None:
+            child.kill()
+            child.wait()

@@ -344,6 +344,29 @@ def _proc_table() -> dict[int, tuple[int, float, float]]:
     return table
 
 
+def _kill_if_child_of(pid: int, parent: int) -> None:
+    """SIGKILL ``pid`` if it is still a child of ``parent`` (a pidfd pins the process first; without
+    pidfds, as on kernels before 5.3, a plain kill after the same check)."""
+    opened = getattr(os, "pidfd_open", None)
+    try:
+        fd = opened(pid) if opened is not None else None
+    except OSError:  # gone
+        return
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            if int(f.read().rsplit(b")", 1)[1].split()[1]) != parent:
+                return  # not the process the walk saw: its pid was reused
+        if fd is not None:
+            signal.pidfd_send_signal(fd, signal.SIGKILL)
+        else:
+            os.kill(pid, signal.SIGKILL)
+    except OSError:  # gone meanwhile
+        pass
+    finally:
+        if fd is not None:
+            os.close(fd)
+
+
 def _tree(table: dict[int, tuple[int, float, float]], root: int) -> list[int]:
     """``root`` and its descendants (the grader, its zygote, the answers' children)."""
     below: dict[int, list[int]] = {}
@@ -462,9 +485,18 @@ class GraderProcess:
     def pid(self) -> int:
         return self.proc.pid
 
-    def children(self) -> list[int]:
-        """The processes under this grader now that are not its own (its answer's jailed children)."""
-        return [p for p in _tree(_proc_table(), self.pid) if p not in self.own_pids]
+    def children(self) -> list[tuple[int, int]]:
+        """The processes under this grader now that are not its own (its answer's jailed children), each
+        with its parent: (pid, parent pid)."""
+        table = _proc_table()
+        return [(p, table[p][0]) for p in _tree(table, self.pid) if p not in self.own_pids]
+
+    @staticmethod
+    def kill_children(children: list[tuple[int, int]]) -> None:
+        """SIGKILL the answer's children :meth:`children` found. Each is signalled through a pidfd opened
+        before its parent is checked again, so a pid reused since the /proc walk is never signalled."""
+        for pid, parent in children:
+            _kill_if_child_of(pid, parent)
 
     def wait_ready(self, timeout: float = 600) -> None:
         if self.ready:

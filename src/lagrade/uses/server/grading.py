@@ -25,7 +25,6 @@ import json
 import logging
 import os
 import re
-import signal
 import tempfile
 import tomllib
 import threading
@@ -349,11 +348,7 @@ class GradingQueue:
             if not children:
                 return
             g.job["parked"] = True
-            for pid in children:
-                try:
-                    os.kill(pid, signal.SIGKILL)
-                except OSError:  # gone meanwhile, or not ours: it is its grader's then, which is bounded
-                    pass
+            g.kill_children(children)
         with self._lock:
             student = self._owner.get(sid)
             started = self._grading.pop(sid, None)
