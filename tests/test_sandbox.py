@@ -267,3 +267,32 @@ def test_the_child_sends_expressions_as_nodes_and_the_rest_as_srepr(tmp_path):
     assert decode_value(out.values["L"]) == th.diff(sp.Symbol("t")) ** 2 / 2 + sp.cos(th)
     assert decode_value(out.values["H"]) == sp.Heaviside(sp.Symbol("t"))
     assert decode_value(out.values["Q"])[0] == decode_value(out.values["L"])
+
+
+def _open_fds() -> int:
+    return len(os.listdir("/proc/self/fd"))
+
+
+def test_an_answer_never_waited_for_or_cut_off_leaves_no_pipe_open(tmp_path, monkeypatch):
+    """A grader process lives for a whole class: an answer started but never waited for (the grading
+    stopped first) or whose reading a bound cut off must not keep the two pipes from its child open."""
+    import gc
+
+    path = write(tmp_path, GOOD)
+    sandbox.run_answer_file(path, ["L"], FAST)  # the zygote and its pipes exist before counting
+    before = _open_fds()
+    for _ in range(5):
+        sandbox.start_answer_file(path, ["L"], FAST)  # dropped at once
+    gc.collect()
+    assert _open_fds() == before
+
+    def cut_off(*args, **kwargs):
+        raise TimeoutError("the grading's bound")
+
+    monkeypatch.setattr(sandbox, "_read", cut_off)
+    running = sandbox.start_answer_file(path, ["L"], FAST)
+    with pytest.raises(TimeoutError):
+        running.wait()
+    del running
+    gc.collect()
+    assert _open_fds() == before

@@ -17,6 +17,7 @@ import secrets
 import selectors
 import signal
 import time
+import weakref
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, Literal
@@ -57,11 +58,16 @@ class RunningAnswer:
     Starting it and waiting are separate so that a one-off check can import the grading code while
     the child runs: two cores, two things at once."""
 
-    def __init__(self, outcome: SandboxOutcome | None = None, finish=None):
+    def __init__(self, outcome: SandboxOutcome | None = None, finish=None, abandon=None):
         self._outcome, self._finish = outcome, finish
+        # never waited for (the grading stopped first): the pipes from the child are closed when this
+        # is collected, not kept open for the life of a grader process
+        self._abandon = weakref.finalize(self, abandon) if abandon is not None else None
 
     def wait(self) -> SandboxOutcome:
         if self._outcome is None:
+            if self._abandon is not None:
+                self._abandon.detach()
             self._outcome = self._finish()
         return self._outcome
 
@@ -88,7 +94,7 @@ def start_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits =
         return RunningAnswer(SandboxOutcome(status="error" if syntax else "rejected", problems=problems))
     from lagrade.answer.jail import zygote
 
-    return RunningAnswer(finish=_start_in_jail(zygote.current(), source, path, list(wanted), limits))
+    return RunningAnswer(*(None, *_start_in_jail(zygote.current(), source, path, list(wanted), limits)))
 
 
 #: how much longer the wall-clock bound of an answer is once its coordinator lowered its priority
@@ -132,60 +138,46 @@ def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: Sand
     thread = threading.Thread(target=spawn, name="lagrade-spawn", daemon=True)
     thread.start()
 
-    def finish() -> SandboxOutcome:
-        thread.join()
-        if "pid" not in spawned:
-            os.close(result_r)
-            os.close(out_r)
-            return SandboxOutcome(status="crashed", problems=[AnswerProblem(
-                file=name, line=None, message=f"the sandbox could not run the answer ({spawned.get('error')}); "
-                                              "please report it to your instructor")])
-        return _collect(spawned["pid"], name, wanted, limits, token, result_r, out_r, spawned["at"], zyg.reap,
-                        zyg.lowered)
+    pipes = [result_r, out_r]
 
-    return finish
+    def close_pipes() -> None:  # once, whichever comes first: the outcome read, a bound, or abandon
+        while pipes:
+            os.close(pipes.pop())
+
+    def finish() -> SandboxOutcome:
+        try:
+            thread.join()
+            if "pid" not in spawned:
+                return SandboxOutcome(status="crashed", problems=[AnswerProblem(
+                    file=name, line=None, message=f"the sandbox could not run the answer ({spawned.get('error')}); "
+                                                  "please report it to your instructor")])
+            return _collect(spawned["pid"], name, wanted, limits, token, result_r, out_r, spawned["at"], zyg.reap,
+                            zyg.lowered)
+        finally:  # also when the grading's bound stops the reading: the pipes never outlive it
+            close_pipes()
+
+    def abandon() -> None:
+        """Never waited for: close the pipes (the child, bounded by its limits, is reaped by the zygote)."""
+        thread.join()
+        close_pipes()
+
+    return finish, abandon
 
 
 def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, token: str, result_r: int, out_r: int,
              started: float, reap=None, lowered=None) -> SandboxOutcome:
     """``lowered(pid)``: whether the child now runs at a lower priority than its zygote (then its
     wall-clock bound is :data:`LOWERED_WALL_FACTOR` times as long)."""
-    deadline = started + limits.wall_seconds
-    stretched = False
     result, output = bytearray(), bytearray()
-    timed_out = overflow = False
-    with selectors.DefaultSelector() as sel:
-        sel.register(result_r, selectors.EVENT_READ)
-        sel.register(out_r, selectors.EVENT_READ)
-        while sel.get_map() and not overflow:
-            remaining = deadline - time.monotonic()
-            if remaining <= 0 and not stretched and lowered is not None and _asked(lowered, pid):
-                stretched = True
-                deadline = started + limits.wall_seconds * LOWERED_WALL_FACTOR
-                continue
-            if remaining <= 0:
-                timed_out = True
-                break
-            for key, _ in sel.select(remaining):
-                chunk = os.read(key.fd, 65536)
-                if not chunk:
-                    sel.unregister(key.fd)
-                elif key.fd == result_r:
-                    result += chunk
-                    if len(result) > limits.max_output_bytes + 100_000:
-                        overflow = True
-                elif len(output) < 4 * STDOUT_KEEP:
-                    output += chunk[: 4 * STDOUT_KEEP - len(output)]
-    exit_status, cpu_used = (reap or reap_child)(pid, kill=timed_out or overflow, deadline=deadline + 2)
-    os.close(result_r)
-    os.close(out_r)
+    timed_out, overflow, stretched = _read(pid, limits, result_r, out_r, started, result, output, lowered)
+    wall = limits.wall_seconds * (LOWERED_WALL_FACTOR if stretched else 1)
+    exit_status, cpu_used = (reap or reap_child)(pid, kill=timed_out or overflow, deadline=started + wall + 2)
     stdout = output.decode("utf-8", "replace")[:STDOUT_KEEP]
 
     def outcome(status: str, message: str) -> SandboxOutcome:
         return SandboxOutcome(status=status, stdout=stdout, problems=[AnswerProblem(file=name, line=None, message=message)])
 
     if timed_out:
-        wall = limits.wall_seconds * (LOWERED_WALL_FACTOR if stretched else 1)
         return outcome("timeout", f"ran longer than {wall:g} s (an infinite loop, or a computation that is too heavy?)")
     if overflow:
         return outcome("error", f"the answer's values are too large (more than {limits.max_output_bytes} bytes)")
@@ -210,6 +202,37 @@ def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, toke
     problems = [p.model_copy(update={"file": name}) for p in report.problems[:50]]
     return SandboxOutcome(values=values, problems=problems, stdout=stdout, status=report.status)
 
+
+
+def _read(pid: int, limits: SandboxLimits, result_r: int, out_r: int, started: float, result: bytearray,
+          output: bytearray, lowered) -> tuple[bool, bool, bool]:
+    """Read the child's result and output until both pipes close or its wall-clock bound passes:
+    (timed out, too much output, bound stretched because the child was lowered)."""
+    deadline = started + limits.wall_seconds
+    stretched = timed_out = overflow = False
+    with selectors.DefaultSelector() as sel:
+        sel.register(result_r, selectors.EVENT_READ)
+        sel.register(out_r, selectors.EVENT_READ)
+        while sel.get_map() and not overflow:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0 and not stretched and lowered is not None and _asked(lowered, pid):
+                stretched = True
+                deadline = started + limits.wall_seconds * LOWERED_WALL_FACTOR
+                continue
+            if remaining <= 0:
+                timed_out = True
+                break
+            for key, _ in sel.select(remaining):
+                chunk = os.read(key.fd, 65536)
+                if not chunk:
+                    sel.unregister(key.fd)
+                elif key.fd == result_r:
+                    result += chunk
+                    if len(result) > limits.max_output_bytes + 100_000:
+                        overflow = True
+                elif len(output) < 4 * STDOUT_KEEP:
+                    output += chunk[: 4 * STDOUT_KEEP - len(output)]
+    return timed_out, overflow, stretched
 
 
 def _asked(lowered, pid: int) -> bool:
