@@ -141,10 +141,10 @@ def test_the_store_records_the_jail_and_exports_show_it(tmp_path):
 
 
 def _old_gradebook(db: Path) -> None:
-    """A gradebook as lagrade wrote it before ``attempts``, ``jail``, ``review`` and ``detail``, with one
-    grader crash in it."""
+    """A gradebook as lagrade wrote it before ``attempts``, ``jail``, ``review``, ``detail`` and
+    ``certificate``, with one grader crash in it."""
     old = "\n".join(line for line in SCHEMA.splitlines()
-                    if not line.lstrip().startswith(("attempts", "jail", "review", "detail")))
+                    if not line.lstrip().startswith(("attempts", "jail", "review", "detail", "certificate")))
     assert "attempts" not in old and "jail" not in old and "review " not in old
     con = sqlite3.connect(db)
     con.executescript(old)
@@ -173,7 +173,7 @@ def test_an_old_gradebook_is_read_as_it_is_and_migrated_by_a_grading_run(tmp_pat
         row = store.submissions()[0]
         assert (row["status"], row["attempts"], row["jail"]) == ("grader-crash", 1, None)
         assert store.retries() == {("kim", "12.43")}
-        assert {"review", "detail"} <= {k for k in store.parts()[0].keys()}
+        assert {"review", "detail", "certificate"} <= {k for k in store.parts()[0].keys()}
     with Store(db, lock=True) as store:  # opening again changes nothing
         assert store.submissions()[0]["attempts"] == 1
 

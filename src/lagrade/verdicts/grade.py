@@ -127,9 +127,7 @@ def cpu_time_bound(seconds: float | None) -> Iterator[None]:
             state["expired"] = True
             raise GradingOutOfTime(out_of_time(seconds))
 
-    hook = sys.unraisablehook
-
-    profiler = sys.getprofile()
+    hook, profiler = sys.unraisablehook, sys.getprofile()
 
     def _raise_at_next_call(frame, event, arg) -> None:  # noqa: ARG001
         if frame.f_code is _dropped.__code__:  # the hook's own return
