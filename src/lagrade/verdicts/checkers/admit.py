@@ -612,9 +612,10 @@ SAMPLED_STATES = 24
 def comparison_states(free: list[sp.Symbol], mech, part: Part) -> list[dict[sp.Symbol, np.ndarray]]:
     """The states at which the checkers compare a part, as arrays for the symbols ``free``: the
     values' and equations' (``rng_for(problem, part)``), and the same with parameters shared by groups
-    of four (the Lagrangian's, `dynamics._grouped_points`). Symbols they do not sample (momenta, a
-    part's own names) get values of their own."""
-    from lagrade.compare.sampling import grouped, rng_for, sample_points
+    of four (the Lagrangian's, `dynamics._grouped_points`). The momenta are the true ones at the
+    sampled velocities, as the checkers compare them (uniform ones missed a term large only where the
+    true momenta never go); symbols they do not sample (a part's own names) get values of their own."""
+    from lagrade.compare.sampling import grouped, rng_for, sample_points, state_arrays
 
     def base():
         return sample_points(mech, SAMPLED_STATES, rng_for(mech.problem.id, part.name), extra=part.symbol_domains)
@@ -623,6 +624,12 @@ def comparison_states(free: list[sp.Symbol], mech, part: Part) -> list[dict[sp.S
     out = []
     for pts in (base(), grouped(base(), mech, part.symbols)):
         values = dict(pts.values)
+        if mech.s.p:
+            try:
+                with np.errstate(all="ignore"):
+                    values.update(zip(mech.s.p, mech.momenta(*state_arrays(mech, pts))))
+            except Exception:  # noqa: BLE001  (a scene without a Legendre transform: momenta of their own)
+                pass
         for p in mech.s.p:
             values.setdefault(p, rng.uniform(-1.5, 1.5, SAMPLED_STATES))
         out.append({s: np.broadcast_to(np.asarray(values[s] if s in values else rng.uniform(0.5, 1.5, SAMPLED_STATES),

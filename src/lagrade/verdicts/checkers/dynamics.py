@@ -987,6 +987,22 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
     use = [i for i, ok in enumerate(consistent) if ok and np.abs(A_s[i]).max() > 0]
     rank = min((np.linalg.matrix_rank(A_s[use, :, k]) for k in range(pts.K)), default=0) if use else 0
     fraction = 1.0 if rank >= n and all(consistent) else rank / max(n, len(rows))
+    if fraction >= 1.0 and not admit.pending():
+        # Agreement in floating point (1e-7) is checked again exactly: each row's linear part at
+        # equilibrium must lie in the span of the true one's at an exact state (a coefficient off by
+        # 1e-8 is refuted there, certified).
+        true_rows = [affine(e) for e in mech.EL]
+        for k in range(min(EXACT_STATES, pts.K)):
+            for i in range(len(rows)):
+                cert = outside_span(
+                    f"a minor of the true linearized equations stacked with your equation {i + 1} (zero if yours "
+                    "were a combination of them)", true_rows, affine(rows[i]),
+                    [np.append(A_r[j, :, k], g0_r[j, k]) for j in range(n)], np.append(A_s[i, :, k], g0[i, k]),
+                    {s: v[k] for s, v in pts.values.items()})
+                if cert is not None:
+                    admit.witness(cert)
+                    return graded(part, 0.0, "numeric", f"Incorrect: equation {i + 1} does not agree with the "
+                                  f"linearized equations of motion about equilibrium {EXACTLY}.")
     if fraction >= 1.0:
         # Linear or not? Compare with the linear extrapolation at a displaced state.
         rng = rng_for(ctx.problem.id, part.name, "nonlinear")
@@ -995,6 +1011,11 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
         g = evaluate(rows, args, displaced)
         lin = np.einsum("msk,sk->mk", A_s, dq) + g0
         nonlinear = not np.allclose(g, lin, rtol=1e-6, atol=1e-9 * scale_of(g))
+        if nonlinear and _exact_refutation(mech, part, rows, pts, "your equation {i}", None) is not None:
+            return graded(part, 0.0, "numeric", "Incorrect: your equations linearize to the right small-oscillation "
+                          "equations, but they are not linear, and they are not the exact equations of motion "
+                          f"either (they do not hold for the true motion {EXACTLY}): a nonlinear term is wrong. "
+                          "Write the linearized equations.")
         note = ("These are the exact (nonlinear) equations; they linearize to the right small-oscillation "
                 "equations, which were asked." if nonlinear else "")
         return graded(part, ctx.credit.nonlinear_for_linearized if nonlinear else 1.0, "numeric",
