@@ -630,11 +630,18 @@ def comparison_states(free: list[sp.Symbol], mech, part: Part) -> list[dict[sp.S
                     values.update(zip(mech.s.p, mech.momenta(*state_arrays(mech, pts))))
             except Exception:  # noqa: BLE001  (a scene without a Legendre transform: momenta of their own)
                 pass
-        for p in mech.s.p:
-            values.setdefault(p, rng.uniform(-1.5, 1.5, SAMPLED_STATES))
-        out.append({s: np.broadcast_to(np.asarray(values[s] if s in values else rng.uniform(0.5, 1.5, SAMPLED_STATES),
-                                                  dtype=complex), (SAMPLED_STATES,)) for s in free})
+        out.append(_filled(values, free, mech, rng, SAMPLED_STATES))
     return out
+
+
+def _filled(values: dict, free: list[sp.Symbol], mech, rng: np.random.Generator, K: int) -> dict:
+    """``values`` for the symbols ``free`` as complex arrays of ``K``: momenta not given any real ones
+    (reality and branch signs are all that is asked of them then), other symbols the states do not
+    sample (a part's own names) values in [0.5, 1.5]."""
+    for p in mech.s.p:
+        values.setdefault(p, rng.uniform(-1.5, 1.5, K))
+    return {s: np.broadcast_to(np.asarray(values[s] if s in values else rng.uniform(0.5, 1.5, K), dtype=complex),
+                               (K,)) for s in free}
 
 
 def _proved_zero(e: sp.Basic, mech, deadline: float) -> bool:
@@ -676,11 +683,7 @@ def _sample_args(free: list[sp.Symbol], mech, part: Part, purpose: str, K: int) 
     from lagrade.compare.sampling import rng_for, sample_points
 
     pts = sample_points(mech, K, rng_for(mech.problem.id, part.name, purpose), extra=part.symbol_domains)
-    rng = rng_for(mech.problem.id, part.name, purpose, "other")
-    values = dict(pts.values)
-    for p in mech.s.p:  # any real momenta: reality and branch signs are all that is asked here
-        values.setdefault(p, rng.uniform(-1.5, 1.5, K))
-    return [np.asarray(values[s] if s in values else rng.uniform(0.5, 1.5, K), dtype=complex) for s in free]
+    return list(_filled(dict(pts.values), free, mech, rng_for(mech.problem.id, part.name, purpose, "other"), K).values())
 
 
 # ----------------------------------------------------------------------------- the wrapper
