@@ -79,7 +79,8 @@ def evidence(part) -> str:
     """Which evidence decided a part's rejection, from the verdict's method and words."""
     if part.verdict == "correct":
         return "not rejected"
-    return ("the numbers rule" if "cannot be accepted" in part.feedback
+    return ("exact arithmetic" if part.method == "exact"
+            else "the numbers rule" if "cannot be accepted" in part.feedback
             else "trajectories" if part.method == "trajectory"
             else "states along the motion" if MOTION_WORDS in part.feedback
             else "sampled states")

@@ -38,6 +38,12 @@ from lagrade.derive.effects import DISSIPATION
 from lagrade.verdicts.result import PartResult
 from lagrade.problem.spec import Part
 
+#: inverse functions: on their principal branch they fold a variable argument back (acos(cos(u)) is
+#: |u|) or switch (atan(1/u) + atan(u) is pi/2 sign(u)), so a variable one needs a proof; a motion q(t)
+#: is judged by the equation it satisfies, which a fold does not
+INVERSE_FUNCTIONS = frozenset({"asin", "acos", "atan", "acot", "asec", "acsc", "atan2",
+                               "asinh", "acosh", "atanh", "acoth", "asech", "acsch", "LambertW"})
+MOTION_KINDS = frozenset({"trajectory", "numerical_solution"})
 #: functions analytic in their arguments wherever they are defined (their only singular sets are
 #: branch cuts and poles, of measure zero): agreement at random points decides for these
 ANALYTIC_FUNCTIONS = frozenset({
@@ -306,6 +312,10 @@ def _constructs(expr: sp.Expr, part: Part, mech) -> list[str]:
             folded = _folded(e)
             if folded:
                 notes.append(folded)
+                continue
+            if name in INVERSE_FUNCTIONS and e.free_symbols and part.kind not in MOTION_KINDS:
+                notes.append(f"it takes {name} of a quantity that varies: an inverse function can fold or switch "
+                             "where no state was tried")
                 continue
             stack.extend(e.args)
         elif isinstance(e, AppliedUndef) and e.func.__name__ in functions:
@@ -730,7 +740,12 @@ def admitted(checker: Checker) -> Checker:
 def _certified(res: PartResult, screen: Screen) -> PartResult:
     """A verdict short of full marks decided at sampled states carries its certificate; one whose
     refutation could not be certified is flagged for review, never a silent reject."""
-    if res.verdict not in ("incorrect", "partial") or res.method != "numeric":
+    if res.verdict not in ("incorrect", "partial"):
+        return res
+    if res.method == "exact":  # decided in exact arithmetic (`lagrade.compare.exact`): a proof in itself
+        res.certified = True
+        return res
+    if res.method != "numeric":
         return res
     if screen.certificates and not screen.uncertified:
         res.certified = True

@@ -83,7 +83,7 @@ def surplus(wrong: int, given: int, expected: int, ctx: Context) -> int:
 def factor_text(c: float) -> str | None:
     """A measured factor as a student should read it, when it names a classic slip: 2 or 1/2 (a missing
     or doubled 1/2). Any other factor is not said: the answer divided by it would be the reference, so
-    the feedback would be an oracle for the coefficients (``in_kind`` says "too large" instead)."""
+    the feedback would be an oracle for the coefficients (``in_kind`` says "not the right size" instead)."""
     if not np.isfinite(c) or c == 0:
         return None
     for slip, text in ((2.0, "2"), (0.5, "1/2")):
@@ -93,9 +93,9 @@ def factor_text(c: float) -> str | None:
 
 
 def in_kind(c: float) -> str:
-    """A factor off in kind only: "too large", "too small", with "the wrong sign" where it is negative."""
-    size = "too large" if abs(c) > 1 else "too small"
-    return f"the wrong sign and {size}" if c < 0 else size
+    """A factor off in kind only: "not the right size", with "the wrong sign" where it is negative. No
+    direction: "too large" or "too small" would let a sequence of checks bisect the coefficient."""
+    return "the wrong sign and not the right size" if c < 0 else "not the right size"
 
 
 def suggest(name: str, known: Iterable[str]) -> str:
@@ -155,11 +155,15 @@ def _evaluate_derivatives(expr: sp.Basic) -> sp.Basic:
         return expr
 
 
+#: what the physical domain settles by itself, once the symbols carry their assumptions
+_DOMAIN_SETTLED = (sp.re, sp.im, sp.arg, sp.conjugate, sp.Abs, sp.sign, sp.Pow)
+
+
 def _real_parts(expr: sp.Basic, positive: set[str] = frozenset()) -> sp.Basic:
-    """``re(t)``, ``im(theta)`` (from ``expand(complex=True)``): every quantity of a problem is real,
-    so read them with real symbols (positive where the problem says so), then go back to the engine's
-    plain symbols."""
-    if not expr.has(sp.re, sp.im, sp.arg, sp.conjugate):
+    """Read on the physical domain: ``re(t)``, ``im(theta)`` (from ``expand(complex=True)``), ``Abs(m1)``,
+    ``sign(m1)``, ``sqrt(m1**2)``: every quantity of a problem is real, and positive where the problem
+    says so, so read them with symbols that say it, then go back to the engine's plain symbols."""
+    if not expr.has(*_DOMAIN_SETTLED):
         return expr
     real = {s: sp.Symbol(s.name, positive=True) if s.name in positive else sp.Symbol(s.name, real=True)
             for s in expr.free_symbols if isinstance(s, sp.Symbol)}
@@ -220,7 +224,7 @@ def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates:
 #: for, never left as q'' (which grading would fill with the true ones); `Part.accelerations` lifts it
 RESULT_KINDS = frozenset({"expression", "expression_set", "equation_root"})
 #: kinds whose answer is the motion itself, a function of t: no coordinate or velocity in it
-MOTION_KINDS = frozenset({"trajectory", "numerical_solution"})
+MOTION_KINDS = admit.MOTION_KINDS
 
 
 def _no_accelerations(nodes, part: Part) -> None:

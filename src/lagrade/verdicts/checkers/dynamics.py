@@ -29,7 +29,8 @@ from lagrade.verdicts.checkers.base import (
 )
 from lagrade.compare.certify import Certificate, certify, outside_span, sign_change, zero_at
 from lagrade.compare.equations import CompiledRows, analyse_rows
-from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, time_bound
+from lagrade.compare import exact
+from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, proves_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs, confirm_refutation
 from lagrade.derive.effects import machinery
 from lagrade.numbers.numeric import (
@@ -485,6 +486,65 @@ def _scaling(E_s: np.ndarray, E_r: np.ndarray, groups: int, per: int, rtol: floa
     return np.array(cs)
 
 
+EXACT_WRONG = ("agrees with the true one to within floating point at every state tried, but exact arithmetic shows "
+               "a difference (a coefficient or a number in it is not the right one)")
+
+
+def _exactly_zero(exprs: list[sp.Expr], ctx: Context) -> bool | None:
+    """All of ``exprs`` identically zero on the physical domain (`lagrade.compare.exact`): True; one of
+    them not: False; None when one is outside the exact class and none is refuted."""
+    out: bool | None = True
+    for e in exprs:
+        got = exact.is_zero(e, ctx.positive, ctx.symbolic_seconds)
+        if got is False:
+            return False
+        if got is None:
+            out = None
+    return out
+
+
+def _exact_accelerations(mech: Mechanics, ctx: Context) -> dict[sp.Symbol, sp.Expr] | None:
+    try:
+        with time_bound(ctx.symbolic_seconds):
+            return dict(zip(mech.s.qdd, mech.accelerations_symbolic))
+    except _OutOfTime:
+        return None
+    except Exception:  # noqa: BLE001  (no closed form: the other evidence decides)
+        return None
+
+
+def _row_factors(row: sp.Expr, qdd: list[sp.Symbol], positive: set[str]) -> tuple[list[sp.Expr], list[sp.Expr]]:
+    """(the factors common to a whole equation, the factors of its denominator), each with a variable."""
+    num, den = sp.fraction(sp.together(exact._assume(row, positive)))
+    acc = [exact._assume(a, positive) for a in qdd]
+    poly = sp.Poly(num, *acc)
+    common = sp.gcd_list(poly.coeffs()) if len(poly.coeffs()) > 1 else poly.coeffs()[0]
+    factors = [f for f, _ in sp.factor_list(common)[1] if f.free_symbols] if common.free_symbols else []
+    return factors, [f for f, _ in sp.factor_list(den)[1] if f.free_symbols] if den.free_symbols else []
+
+
+def _singular_factor(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -> str | None:
+    """A factor of one of the equations (all of its terms), or of its denominator, that vanishes somewhere on
+    the physical domain and is not the scene's own (a factor of a reference equation or of its denominator,
+    up to a constant): equations multiplied by ``(m1 - 50)`` say nothing where it vanishes. The witness is
+    exact: a real root, in the domain, of the factor as a polynomial in one symbol with the others at
+    domain values (`exact.vanishes_in_domain`). None when no factor is shown to vanish (the sampled states'
+    rule then stands)."""
+    try:
+        with time_bound(ctx.symbolic_seconds):
+            mine = [f for r in rows for part in _row_factors(r, mech.s.qdd, ctx.positive) for f in part]
+            suspects = [f for f in mine if not (f.is_positive or f.is_negative) and exact.vanishes_in_domain(f)]
+            if not suspects:
+                return None
+            own = [f for r in mech.EL for part in _row_factors(r, mech.s.qdd, ctx.positive) for f in part]
+            for f in suspects:
+                if not any(exact.proportional(f, g, ctx.positive, ctx.symbolic_seconds) for g in own):
+                    return sp.sstr(f)
+    except (_OutOfTime, Exception):  # noqa: BLE001  (no proof either way: the sampled states' rule stands)
+        return None
+    return None
+
+
 def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
     mech = ctx.mech(part)
     L_s = reduce_by_constraints(read_expr(value, part, mech, plain_coordinates=False, max_order=1), mech)
@@ -502,6 +562,13 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
         return mech.lagrange_rows(L_s)
 
     if c is not None and np.allclose(c, 1.0, rtol=rtol, atol=0):
+        decided = None if exact.outside(L_s, ctx.positive) else _exactly_zero(
+            [a - b for a, b in zip(student_rows(), mech.EL)], ctx)
+        if decided is not None:
+            admit.proved()
+            if not decided:
+                return graded(part, 0.0, "exact", f"Incorrect: the Lagrange equations your L gives {EXACT_WRONG}.")
+            return graded(part, 1.0, "exact", "correct: its Lagrange equations are exactly the true ones.")
         proof, traj = _confirm(
             ctx, lambda: proves_all_zero([a - b for a, b in zip(mech.lagrange_rows(L_s), mech.EL)],
                                          ctx.symbolic_seconds, ctx.positive),
@@ -733,6 +800,21 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
         return compiled.solver
 
     traj, where = None, ""
+    if an.fraction >= 1.0 and len(rows) == len(mech.s.qdd) and not an.vanishing_factor:
+        acc = _exact_accelerations(mech, ctx)
+        decided = None if acc is None else _exactly_zero([r.xreplace(acc) for r in rows], ctx)
+        if decided is False:
+            admit.proved()
+            return graded(part, 0.0, "exact", f"Incorrect: your equations of motion: one {EXACT_WRONG}.")
+        if decided:
+            bad = _singular_factor(rows, mech, ctx)
+            admit.proved()
+            if bad is None:
+                return graded(part, 1.0, "exact", "correct: your equations hold exactly for the true motion and "
+                                                  "determine the accelerations.")
+            return graded(part, 0.0, "exact", "Incorrect: your equations hold for the true motion, but they are multiplied by a "
+                          f"factor ({bad}) that becomes zero within the problem's physical range: where it does, "
+                          "they no longer determine the accelerations; divide the factor out.")
     if an.fraction >= 1.0:
         proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
                                lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows))
@@ -1062,6 +1144,21 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
         return hamilton_rows(H_s, mech)
 
     if same:
+        try:
+            with time_bound(ctx.symbolic_seconds):
+                H_exact = mech.hamiltonian_symbolic
+        except (_OutOfTime, Exception):  # noqa: BLE001
+            H_exact = None
+        decided = None if H_exact is None or exact.outside(H_s, ctx.positive) else _exactly_zero(
+            [sp.diff(H_s - H_exact, v) for v in [*mech.s.q, *mech.s.p, T]], ctx)
+        if decided is not None:
+            admit.proved()
+            if not decided:
+                return graded(part, 0.0, "exact", f"Incorrect: your H {EXACT_WRONG}, or differs from it by more "
+                                                  "than a constant.")
+            return graded(part, 1.0, "exact", "correct: exactly the true H" + (
+                "" if np.all(np.abs(diff) <= tol) else ", up to a constant") + ".")
+
         def prove() -> bool | None:
             try:
                 with time_bound(ctx.symbolic_seconds):
@@ -1069,8 +1166,14 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
             except _OutOfTime:
                 return None
             d = H_s - H_ref
-            return proves_all_zero([sp.diff(d, v) for v in [*mech.s.q, *mech.s.p]],
-                                   ctx.symbolic_seconds, ctx.positive)
+            # H is the energy up to a constant: d minus its value at one state, not only its derivatives
+            # (a switch such as atan(1/(pi - q)) + atan(pi - q) has derivative 0 and jumps at q = pi)
+            for k in range(1, 4):
+                at = {v: sp.Rational(k, 7) for v in [*mech.s.q, *mech.s.p, T]}
+                d0 = d.xreplace(at)
+                if d0.is_finite is not False and not d0.has(sp.nan, sp.zoo):
+                    return proves_zero(d - d0, ctx.symbolic_seconds, ctx.positive)
+            return None
 
         proof, traj = _confirm(ctx, prove, lambda: _trajectory_hamilton(ctx, mech, part, student_rates, student_rows))
         off = None if proof else _motion_refutation(ctx, mech, part, traj, student_rows(), True,

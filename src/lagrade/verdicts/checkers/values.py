@@ -24,6 +24,7 @@ from lagrade.verdicts.checkers.base import (
     result,
     surplus,
 )
+from lagrade.compare import exact
 from lagrade.compare.certify import certify, root_between
 from lagrade.compare.symbolic import _OutOfTime, proves_zero, time_bound
 from lagrade.problem.notation import YES_NO
@@ -110,6 +111,8 @@ def _reference(part: Part, mech: Mechanics, text: object) -> sp.Expr:
 
 def _read(ctx: Context, part: Part, mech: Mechanics, value: object) -> sp.Expr:
     expr = as_expr(value, part)
+    if isinstance(expr, sp.Float) or (isinstance(expr, sp.Mul) and isinstance(-expr, sp.Float)):
+        return expr  # a decimal, kept as typed: a pure number is judged to its digits (`exact.agrees_to_digits`)
     extra = [f"delta_{n}" for n in mech.all_names]
     return read_sympy(expr, part, mech, plain_coordinates=True, momenta=True, extra=extra)
 
@@ -127,27 +130,52 @@ def _evaluate(expr: sp.Expr, pts: Points, syms: list[sp.Symbol] | None = None) -
 
 
 def _symbolic_reference(ref: sp.Expr, mech: Mechanics, seconds: float) -> sp.Expr | None:
-    """The reference with derived accelerations and multipliers substituted, for a proof."""
-    need_acc = ref.free_symbols & set(mech.s.qdd)
-    subs: dict[sp.Basic, sp.Expr] = {}
+    """The reference with derived accelerations, multipliers and constrained coordinates substituted
+    (each of which may bring in the others: x'' = R*phi'', then phi'' solved), for a proof."""
+    derived = {*mech.s.qdd, *mech.multipliers, *mech.constrained}
+    if not ref.free_symbols & derived:
+        return ref
     try:
         with time_bound(seconds):
-            if need_acc or ref.free_symbols & set(mech.multipliers):
-                subs.update(zip(mech.s.qdd, mech.accelerations_symbolic))
+            subs: dict[sp.Basic, sp.Expr] = dict(zip(mech.s.qdd, mech.accelerations_symbolic))
             for lam, e in mech.multiplier_exprs.items():
                 subs[lam] = e.xreplace(subs)
             for c, e in mech.constrained.items():
                 subs[c] = e.xreplace(subs)
-            return ref.xreplace(subs) if subs else ref
+            out = ref
+            for _ in range(4):
+                if not out.free_symbols & derived:
+                    break
+                out = out.xreplace(subs)
+            return out
     except _OutOfTime:
         return None
 
 
 def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, ref: sp.Expr,
                    pts: Points, syms: list[sp.Symbol]) -> tuple[bool, str, str]:
-    """(equal?, method, what is wrong) for one expression against its reference."""
+    """(equal?, method, what is wrong) for one expression against its reference.
+
+    Where both lie in the exact class (`lagrade.compare.exact`) equality is decided there, with no
+    tolerance and no box; otherwise the sampled points, a proof and the screen's rules decide."""
     a = _evaluate(student, pts, syms)
     b = _evaluate(ref, pts, syms)
+    decided = exact_difference(ctx, mech, student, ref)
+    if decided is None and student.has(sp.asin, sp.acos, sp.atan, sp.acsc, sp.asec):
+        truth = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
+        decided = None if truth is None else exact.same_angle(student, truth, ctx.positive, ctx.symbolic_seconds)
+    if decided is not None:
+        admit.proved(student)
+        if decided:
+            pole = exact.new_singularity(student, ref, ctx.positive, ctx.symbolic_seconds)
+            if pole is None:
+                return True, "exact", ""
+            return False, "exact", (f"is undefined where {pole} = 0, which lies within the problem's physical range "
+                                    "(the correct result is defined there)")
+        if np.all(agree(a, b)):
+            return False, "exact", EXACTLY_UNEQUAL
+        certify_difference(mech, student, ref, a, b, pts)
+        return False, "exact", _describe_difference(a, b)
     if np.all(agree(a, b)):
         flagged = admit.pending(student)
         if not ctx.prove_always and not flagged:  # analytic and equal at every sampled point: a proof
@@ -171,6 +199,27 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
     admit.proved(student)  # refuted: it earns nothing, so nothing about it is pending
     certify_difference(mech, student, ref, a, b, pts)
     return False, "numeric", _describe_difference(a, b)
+
+
+EXACTLY_UNEQUAL = ("is not equal to the correct result: exact arithmetic shows a difference that no state tried makes "
+                   "visible (a coefficient or a number in it is not the right one)")
+
+
+def exact_difference(ctx: Context, mech: Mechanics, student: sp.Expr, ref: sp.Expr) -> bool | None:
+    """Is ``student - ref`` exactly zero on the physical domain (the true accelerations and multipliers
+    substituted)? None when either is outside the exact class or the time ran out."""
+    if not hasattr(mech, "accelerations_symbolic"):
+        return None
+    if isinstance(student, sp.Float) or isinstance(-student, sp.Float):  # a decimal for a pure number
+        truth = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
+        if truth is not None and not truth.free_symbols:
+            return exact.agrees_to_digits(student, truth)
+    diff = _symbolic_reference(student - ref, mech, ctx.symbolic_seconds)
+    if diff is None:
+        return None
+    if diff.free_symbols & set(mech.s.p):  # momenta are dL/dq' at the state, as the sampled points take them
+        diff = diff.xreplace({p: sp.diff(mech.L, v) for p, v in zip(mech.s.p, mech.s.qd)})
+    return exact.is_zero(diff, ctx.positive, ctx.symbolic_seconds)
 
 
 def certify_difference(mech: Mechanics, student: sp.Expr, ref: sp.Expr, a: np.ndarray, b: np.ndarray,
@@ -251,7 +300,7 @@ def check_expression(ctx: Context, part: Part, value: object) -> PartResult:
                 notes.append(f"{key} {why}")
                 wrong.append(key)
         fraction = right / len(ref)
-        method = "numeric" if "numeric" in methods or not methods else "symbolic"
+        method = next((m for m in ("numeric", "symbolic", "exact") if m in methods), "numeric")
         closed = [k for k in wrong if not _read(ctx, part, mech, given[k]).free_symbols & {*mech.s.qdd, *mech.multipliers}]
         feedback = "correct." if not notes else "Incorrect: " + "; ".join(notes) + "." + _coupling(part, mech, closed)
         if notes:
@@ -264,7 +313,7 @@ def check_expression(ctx: Context, part: Part, value: object) -> PartResult:
     if ok:
         return graded(part, 1.0, method, "correct.")
     hint = _mistake_message(ctx, part, mech, value, pts, syms)
-    return graded(part, 0.0, "numeric", hint or f"Incorrect: {part.name} {why}.")
+    return graded(part, 0.0, method, hint or f"Incorrect: {part.name} {why}.")
 
 
 def _coupling(part: Part, mech: Mechanics, wrong: list[str]) -> str:
@@ -393,19 +442,13 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
                           f"(squaring, or multiplying by a factor, adds solutions).")
         return graded(part, 1.0, "numeric", f"correct: the true {part.unknown} satisfies your equation.")
     student = _read(ctx, part, mech, value)
+    ok, method, why = compare_scalar(ctx, part, mech, student, ref, pts, syms)
+    if ok:
+        return graded(part, 1.0, method, "correct.")
     a = _evaluate(student, pts, syms)
-    if np.all(agree(a, b)):
-        proof = None
-        if ctx.prove_always or admit.pending(student):
-            sym_ref = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
-            proof = proves_zero(student - sym_ref, ctx.symbolic_seconds) if sym_ref is not None else None
-        if proof:
-            admit.proved(student)
-        return graded(part, 1.0, "symbolic" if proof else "numeric", "correct.")
-    certify_difference(mech, student, ref, a, b, pts)
     if np.all(agree(a, np.degrees(b), rtol=1e-3)):
-        return graded(part, 0.0, "numeric", "Incorrect: this looks like degrees; give the angle in radians.")
-    return graded(part, 0.0, "numeric", f"Incorrect: {part.unknown} {_describe_difference(a, b)}.")
+        return graded(part, 0.0, method, "Incorrect: this looks like degrees; give the angle in radians.")
+    return graded(part, 0.0, method, f"Incorrect: {part.unknown} {why}.")
 
 
 def _linear_in(expr: sp.Expr, x: sp.Symbol, seconds: float) -> bool:

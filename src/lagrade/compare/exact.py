@@ -1,0 +1,491 @@
+"""Exact equality for the class the chapter's answers live in: no tolerance, no sampling box.
+
+Two answers agree at random points of a box and still differ elsewhere, or differ by less than any
+tolerance; neither can happen to the test here. An expression built from the problem's symbols,
+rational numbers, ``pi``, ``E``, ``I``, ``+ - * /``, integer powers, radicals (rational powers of
+radical-free, trigonometry-free bases) and ``sin cos tan cot sec csc sinh cosh tanh coth sech csch
+exp`` of any such argument is mapped into a field of rational functions over independent variables,
+where zero is decided exactly with high probability (Schwartz-Zippel):
+
+- ``exp(c*M)`` and ``exp(I*c*M)`` for a rational ``c`` and a canonical term ``M`` (the argument's
+  terms, each with its rational coefficient taken out) are powers ``y_M**(c*N)`` and ``z_M**(c*N)`` of
+  fresh variables (``N`` the lcm of the denominators of ``M``'s coefficients, so that ``E`` must be
+  planned with the rest); sin, cos, ... are rational in ``exp(I*A)``, ``sinh``, ... in
+  ``exp(A)``. Exponentials of Q-linearly independent functions are algebraically independent over the
+  functions they are exponentials of (the Risch structure theorem), so this is a faithful model;
+- ``pi`` is transcendental, so it is a variable too; ``E`` is ``exp(1)``;
+- a radical ``b**r`` is split into the irreducible factors of ``b`` (sympy's ``factor_list``), each
+  a variable ``w`` with ``w**Q = f``; this is the principal branch only when all but one of the
+  factors are nonnegative on the physical domain (decided from the symbols' assumptions: parameters
+  positive, states real), so any other split is refused (``OutsideClass``). Distinct irreducible
+  factors give independent (Kummer) extensions, in which any root is a faithful embedding;
+- the value is computed modulo a random 61-bit prime ``p`` (chosen with ``i`` in ``F_p``, unique
+  roots of odd degree, and the constant radicands residues) at a random point; a nonzero value
+  proves the expression nonzero as a function (so, on the open physical domain, somewhere in it); a
+  zero at ``POINTS`` independent points says zero, wrongly with probability at most
+  ``(D/p)**POINTS`` for an expression of degree ``D`` (below 1e-20 for any answer the readers admit).
+
+Anything else (an inverse function, ``Abs``, ``sign``, ``Piecewise``, ``log``, a special function, a
+root whose branch the domain does not fix) is outside the class: ``None``, and the grader's other
+evidence (a proof on the domain, the motion) decides.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import sympy as sp
+from sympy.ntheory import isprime, sqrt_mod
+
+from lagrade.compare.symbolic import _OutOfTime, time_bound
+
+#: independent points (each modulo its own prime) at which an expression must vanish to be zero
+POINTS = 2
+#: operations beyond which an expression is not mapped (no answer the readers admit comes near)
+MAX_OPS = 20_000
+#: tries at a point before giving up (a denominator or a radicand that is not a residue there)
+TRIES = 60
+
+_TRIG = {"sin", "cos", "tan", "cot", "sec", "csc"}
+_HYP = {"sinh", "cosh", "tanh", "coth", "sech", "csch"}
+
+
+class OutsideClass(Exception):
+    """The expression has a node the exact test does not model faithfully (named in the message)."""
+
+
+class _Retry(Exception):
+    """This point (or prime) cannot evaluate the expression: a zero denominator, a non-residue."""
+
+
+@dataclass
+class _Radical:
+    """``b**r`` = ``unit`` * prod ``f**s`` over irreducible factors ``f`` (sympy expressions, or prime
+    integers) with rational exponents ``s``; ``unit`` a power of ``I``."""
+
+    i_power: int
+    factors: list[tuple[sp.Basic, Fraction]]
+
+
+@dataclass
+class _Plan:
+    radicals: dict[sp.Basic, _Radical] = field(default_factory=dict)
+    exps: dict[sp.Basic, list[tuple[str, sp.Basic, sp.Rational]]] = field(default_factory=dict)  # node -> [(z|y, M, c)]
+    scale: dict[tuple[str, sp.Basic], int] = field(default_factory=dict)  # (z|y, M) -> N_M
+    degree: dict[sp.Basic, int] = field(default_factory=dict)  # radicand f -> Q (w**Q = f)
+    symbols: set[sp.Symbol] = field(default_factory=set)
+
+
+def _assume(expr: sp.Expr, positive: set[str]) -> sp.Expr:
+    """Symbols with the assumptions of their physical domain: parameters positive, the rest real."""
+    mapping = {}
+    for s in expr.free_symbols:
+        if isinstance(s, sp.Symbol):
+            mapping[s] = sp.Symbol(s.name, positive=True) if s.name in positive else sp.Symbol(s.name, real=True)
+    return expr.xreplace(mapping)
+
+
+def _exact_floats(expr: sp.Expr) -> sp.Expr:
+    """A float in an expression stands for its exact (binary) value: 1.000000001 is not 1."""
+    floats = expr.atoms(sp.Float)
+    return expr.xreplace({f: sp.Rational(f) for f in floats}) if floats else expr
+
+
+def _canonical_term(term: sp.Expr) -> tuple[sp.Rational, bool, sp.Expr]:
+    """(rational coefficient, imaginary?, canonical term M) of one term of an exponent's argument."""
+    c, m = term.as_coeff_Mul()
+    imaginary = False
+    if m.has(sp.I):
+        m = sp.expand(m / sp.I)
+        if m.has(sp.I):
+            raise OutsideClass("a complex exponent")
+        imaginary = True
+        c2, m = m.as_coeff_Mul()
+        c = c * c2
+    if not m.free_symbols and m != 1:
+        if m.has(sp.pi):
+            raise OutsideClass("a rational multiple of pi in an angle that sympy does not evaluate")
+        raise OutsideClass("a function of an irrational constant")
+    num, den = sp.fraction(sp.cancel(m))
+    cn, num = sp.factor_terms(num).as_coeff_Mul()
+    cd, den = sp.factor_terms(den).as_coeff_Mul()
+    pn, num = sp.Poly(num).primitive() if num.is_polynomial() and num.free_symbols else (1, num)
+    pd, den = sp.Poly(den).primitive() if den.is_polynomial() and den.free_symbols else (1, den)
+    num = num.as_expr() if isinstance(num, sp.Poly) else num
+    den = den.as_expr() if isinstance(den, sp.Poly) else den
+    coeff = sp.Rational(c) * sp.Rational(cn) * sp.Rational(pn) / (sp.Rational(cd) * sp.Rational(pd))
+    if num.could_extract_minus_sign():
+        num, coeff = -num, -coeff
+    if den.could_extract_minus_sign():
+        den, coeff = -den, -coeff
+    return coeff, imaginary, sp.expand(num) / sp.expand(den)
+
+
+def _exponent(arg: sp.Expr, kind: str) -> list[tuple[str, sp.Basic, int]]:
+    """``exp(arg)`` (kind "y") or ``exp(I*arg)`` (kind "z") as powers of the variables y_M, z_M."""
+    out: dict[tuple[str, sp.Basic], int] = {}
+    for term in sp.Add.make_args(sp.expand(arg)):
+        if term == 0:
+            continue
+        c, imaginary, m = _canonical_term(term)
+        which = kind if not imaginary else ("z" if kind == "y" else "y")
+        if imaginary and kind == "z":  # exp(I * I*c*M) = exp(-c*M)
+            c = -c
+        out[(which, m)] = out.get((which, m), 0) + sp.Rational(c)
+    return [(w, m, n) for (w, m), n in out.items() if n]
+
+
+def _radical(base: sp.Expr, r: sp.Rational) -> _Radical:
+    """``base**r`` split into irreducible factors, where the split is the principal branch."""
+    if base.has(sp.exp, sp.E, *[getattr(sp, n) for n in (*_TRIG, *_HYP)]):
+        raise OutsideClass("a root of a trigonometric or exponential expression")
+    if _has_radical(base):
+        raise OutsideClass("a nested root")
+    if base.has(sp.I):
+        raise OutsideClass("a root of a complex number")
+    coeff, factors = sp.factor_list(sp.together(base))
+    coeff = sp.Rational(coeff)
+    i_power = 0
+    out: list[tuple[sp.Basic, Fraction]] = []
+    r = Fraction(int(r.p), int(r.q))
+    unknown = 0
+    for f, e in factors:
+        sign = None
+        if f.is_nonnegative:
+            sign = 1
+        elif f.is_nonpositive:
+            sign = -1
+        if sign == -1:
+            f = -f
+            if e % 2:
+                coeff = -coeff
+        elif sign is None:
+            if e % 2 == 0 and (Fraction(e) * r).denominator == 1 and (Fraction(e) * r).numerator % 2 == 0:
+                sign = 1  # (f**2k)**r an even integer power: no branch
+            else:
+                unknown += 1
+        out.append((sp.expand(f), Fraction(e) * r))
+    if coeff < 0:
+        if unknown or (2 * r).denominator != 1:
+            raise OutsideClass("a root of a quantity whose sign the physical domain does not fix")
+        i_power = int(2 * r)
+        coeff = -coeff
+    if unknown > 1:
+        raise OutsideClass("a root of a product of factors whose signs the physical domain does not fix")
+    for prime, e in sp.factorint(int(coeff.p)).items():
+        out.append((sp.Integer(prime), Fraction(e) * r))
+    for prime, e in sp.factorint(int(coeff.q)).items():
+        out.append((sp.Integer(prime), -Fraction(e) * r))
+    return _Radical(i_power, out)
+
+
+def plan(expr: sp.Expr) -> _Plan:
+    """Walk ``expr`` once: every radical split, every exponential mapped; raise `OutsideClass`."""
+    p = _Plan()
+    seen: set[sp.Basic] = set()
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if e in seen:
+            continue
+        seen.add(e)
+        if e.is_Symbol:
+            p.symbols.add(e)
+        elif e.is_Rational or e is sp.I or e is sp.pi or e is sp.E:
+            pass
+        elif e.is_Add or e.is_Mul:
+            stack.extend(e.args)
+        elif e.is_Pow:
+            b, x = e.args
+            if x.is_Integer:
+                stack.append(b)
+            elif x.is_Rational:
+                rad = _radical(b, x)
+                p.radicals[e] = rad
+                for f, s in rad.factors:
+                    if s.denominator != 1:
+                        p.degree[f] = math.lcm(p.degree.get(f, 1), s.denominator)
+                    stack.append(f)
+            else:
+                raise OutsideClass("a power with a non-rational exponent")
+        elif isinstance(e, sp.exp):
+            p.exps[e] = _exponent(e.args[0], "y")
+            stack.extend(m for _, m, _ in p.exps[e])
+        elif type(e).__name__ in _TRIG:
+            p.exps[e] = _exponent(e.args[0], "z")
+            stack.extend(m for _, m, _ in p.exps[e])
+        elif type(e).__name__ in _HYP:
+            p.exps[e] = _exponent(e.args[0], "y")
+            stack.extend(m for _, m, _ in p.exps[e])
+        else:
+            raise OutsideClass(f"{type(e).__name__}")
+    for terms in p.exps.values():  # exp(c*M) = v_M**(c*N_M), N_M the lcm of the denominators of M's c
+        for which, m, c in terms:
+            p.scale[(which, m)] = math.lcm(p.scale.get((which, m), 1), int(c.q))
+    for f, q in p.degree.items():
+        if f.is_Integer is False and f.free_symbols and _has_radical(f):
+            raise OutsideClass("a nested root")
+    return p
+
+
+def _has_radical(f: sp.Basic) -> bool:
+    return any(not x.exp.is_Integer for x in f.atoms(sp.Pow))
+
+
+def _odd_part(q: int) -> tuple[int, int]:
+    k = 0
+    while q % 2 == 0:
+        q //= 2
+        k += 1
+    return k, q
+
+
+def _choose_prime(rng: random.Random, plan_: _Plan) -> int:
+    """A 61-bit prime with sqrt(-1) in F_p, unique roots of every odd degree used, and each constant
+    radicand a residue of the 2-power degree it needs."""
+    odd = {3, 5, 7}
+    for q in plan_.degree.values():
+        odd |= set(sp.primefactors(_odd_part(q)[1]))
+    constants = [(int(f), 2 ** _odd_part(q)[0]) for f, q in plan_.degree.items() if f.is_Integer and q % 2 == 0]
+    for _ in range(20000):
+        p = rng.randrange(2 ** 61, 2 ** 62) | 1
+        if p % 4 != 1 or any(p % r == 1 for r in odd if r != 2):
+            continue
+        if not isprime(p):
+            continue
+        if all(pow(c, (p - 1) // math.gcd(k, p - 1), p) == 1 for c, k in constants):
+            return p
+    raise OutsideClass("constant roots that no prime tried takes")
+
+
+def _root(a: int, q: int, p: int, rng: random.Random) -> int:
+    """A q-th root of a modulo p (q's odd part has a unique root; its 2-power part needs residues)."""
+    k, odd = _odd_part(q)
+    if odd > 1:
+        a = pow(a, pow(odd, -1, p - 1), p)
+    for _ in range(k):
+        roots = sqrt_mod(a, p, all_roots=False)
+        if roots is None:
+            raise _Retry
+        a = roots if rng.random() < 0.5 else (-roots) % p
+    return a
+
+
+class _Evaluator:
+    def __init__(self, plan_: _Plan, p: int, rng: random.Random):
+        self.plan, self.p, self.rng = plan_, p, rng
+        self.i = sqrt_mod(p - 1, p)
+        self.memo: dict[sp.Basic, int] = {}
+        self.vars: dict[object, int] = {}
+        for s in sorted(plan_.symbols, key=str):
+            self.vars[s] = rng.randrange(1, p)
+        self.vars[sp.pi] = rng.randrange(1, p)
+        self.roots: dict[sp.Basic, int] = {}
+        for f, q in sorted(plan_.degree.items(), key=lambda fq: sp.default_sort_key(fq[0])):
+            self.roots[f] = _root(self.ev(f), q, p, rng)
+
+    def var(self, key: object) -> int:
+        if key not in self.vars:
+            self.vars[key] = self.rng.randrange(1, self.p)
+        return self.vars[key]
+
+    def inv(self, a: int) -> int:
+        if a % self.p == 0:
+            raise _Retry
+        return pow(a, -1, self.p)
+
+    def power(self, a: int, n: int) -> int:
+        return pow(a, n, self.p) if n >= 0 else pow(self.inv(a), -n, self.p)
+
+    def ev(self, e: sp.Basic) -> int:
+        got = self.memo.get(e)
+        if got is not None:
+            return got
+        p = self.p
+        if e.is_Symbol or e is sp.pi:
+            v = self.vars[e]
+        elif e.is_Rational:
+            v = int(e.p) * self.inv(int(e.q)) % p
+        elif e is sp.I:
+            v = self.i
+        elif e is sp.E:
+            v = self.power(self.var(("y", sp.S.One)), self.plan.scale.get(("y", sp.S.One), 1))
+        elif e.is_Add:
+            v = sum(self.ev(a) for a in e.args) % p
+        elif e.is_Mul:
+            v = 1
+            for a in e.args:
+                v = v * self.ev(a) % p
+        elif e.is_Pow and e.exp.is_Integer:
+            v = self.power(self.ev(e.base), int(e.exp))
+        elif e.is_Pow:
+            rad = self.plan.radicals[e]
+            v = self.power(self.i, rad.i_power)
+            for f, s in rad.factors:
+                q = self.plan.degree.get(f, 1)
+                whole = self.ev(f) if s.denominator == 1 else self.roots[f]
+                n = s.numerator if s.denominator == 1 else int(s * q)
+                v = v * self.power(whole, n) % p
+        else:
+            name = type(e).__name__
+            x = 1
+            for which, m, c in self.plan.exps[e]:
+                x = x * self.power(self.var((which, m)), int(c * self.plan.scale[(which, m)])) % p
+            if isinstance(e, sp.exp):
+                v = x
+            else:
+                x2 = x * x % p
+                if name in _TRIG:  # x = exp(I*A): sin = (x - 1/x)/(2I), cos = (x + 1/x)/2
+                    s_num, c_num = (x2 - 1) * self.i % p, (x2 + 1) % p  # sin = (x2-1)/(2 I x) = -I(x2-1)/(2x)
+                    sin_v = (-s_num) * self.inv(2 * x) % p
+                    cos_v = c_num * self.inv(2 * x) % p
+                    v = {"sin": sin_v, "cos": cos_v, "tan": sin_v * self.inv(cos_v), "cot": cos_v * self.inv(sin_v),
+                         "sec": self.inv(cos_v), "csc": self.inv(sin_v)}[name] % p
+                else:  # x = exp(A)
+                    sh = (x2 - 1) * self.inv(2 * x) % p
+                    ch = (x2 + 1) * self.inv(2 * x) % p
+                    v = {"sinh": sh, "cosh": ch, "tanh": sh * self.inv(ch), "coth": ch * self.inv(sh),
+                         "sech": self.inv(ch), "csch": self.inv(sh)}[name] % p
+        self.memo[e] = v
+        return v
+
+
+def prepare(expr: sp.Expr, positive: set[str] = frozenset()) -> tuple[sp.Expr, _Plan]:
+    """``expr`` with its symbols' domain assumptions and exact floats, and its plan (or `OutsideClass`)."""
+    expr = _exact_floats(_assume(sp.sympify(expr), set(positive)))
+    if sp.count_ops(expr) > MAX_OPS:
+        raise OutsideClass("an expression too large to map")
+    return expr, plan(expr)
+
+
+def is_zero(expr: sp.Expr, positive: set[str] = frozenset(), seconds: float = 2.0, seed: int = 0) -> bool | None:
+    """True when ``expr`` is identically zero on the physical domain, False when it is not (exactly),
+    None when it is outside the class or the time ran out."""
+    try:
+        with time_bound(seconds):
+            expr, plan_ = prepare(expr, positive)
+            if expr == 0:
+                return True
+            rng = random.Random(seed)
+            for _ in range(POINTS):
+                p = _choose_prime(rng, plan_)
+                for _try in range(TRIES):
+                    try:
+                        value = _Evaluator(plan_, p, rng).ev(expr)
+                    except _Retry:
+                        continue
+                    break
+                else:
+                    return None
+                if value != 0:
+                    return False
+            return True
+    except (OutsideClass, _OutOfTime):
+        return None
+    except (sp.PolynomialError, sp.polys.polyerrors.PolificationFailed, ValueError, TypeError,
+            ZeroDivisionError, RecursionError):
+        return None
+
+
+def outside(expr: sp.Expr, positive: set[str] = frozenset()) -> str | None:
+    """Why ``expr`` is outside the exact class, or None when it is inside."""
+    try:
+        prepare(expr, positive)
+    except OutsideClass as exc:
+        return str(exc)
+    except Exception as exc:  # noqa: BLE001  (sympy failing to factor: outside, said so)
+        return type(exc).__name__
+    return None
+
+
+def vanishes_in_domain(f: sp.Expr) -> bool:
+    """A point of the physical domain (each symbol's assumptions: ``_assume``) where ``f`` is exactly
+    zero: the other symbols at fixed domain values, a real root in one symbol ``f`` is polynomial in."""
+    free = sorted(f.free_symbols, key=str)
+    for x in free:
+        others = {y: (sp.Rational(3, 4) if y.is_positive else sp.Rational(1, 3)) for y in free if y != x}
+        g = f.xreplace(others)
+        if not g.is_polynomial(x):
+            continue
+        for root in sp.Poly(g, x).real_roots():
+            if not x.is_positive or root > 0:
+                return True
+    return False
+
+
+def proportional(f: sp.Expr, g: sp.Expr, positive: set[str] = frozenset(), seconds: float = 1.0) -> bool:
+    """``f`` a constant multiple of ``g`` (decided here: every derivative of ``f/g`` zero)."""
+    ratio = f / g
+    return all(is_zero(sp.diff(ratio, x), positive, seconds) is True for x in f.free_symbols | g.free_symbols)
+
+
+def _factors(e: sp.Expr) -> list[sp.Expr]:
+    return [f for f, _ in sp.factor_list(e)[1] if f.free_symbols]
+
+
+def new_singularity(expr: sp.Expr, reference: sp.Expr, positive: set[str] = frozenset(),
+                    seconds: float = 2.0) -> str | None:
+    """A factor of ``expr``'s denominator that vanishes somewhere on the physical domain and is none of
+    ``reference``'s: ``right*(m1**2 - 2500)/((m1 - 50)*(m1 + 50))`` is undefined at m1 = 50. The witness
+    is an exact root (``vanishes_in_domain``); None when there is none or the test gave up."""
+    try:
+        with time_bound(seconds):
+            den = sp.fraction(sp.together(_assume(expr, set(positive))))[1]
+            if not den.free_symbols:
+                return None
+            own = _factors(sp.fraction(sp.together(_assume(reference, set(positive))))[1])
+            for f in _factors(den):
+                if f.is_positive or f.is_negative or not f.is_polynomial():
+                    continue
+                if any(proportional(f, g, positive, seconds) for g in own):
+                    continue
+                if vanishes_in_domain(f):
+                    return sp.sstr(f)
+    except Exception:  # noqa: BLE001  (sympy failing to factor, or time: no witness)
+        return None
+    return None
+
+
+#: inverse functions whose principal values lie in [-pi/2, pi/2] (where sin is one to one) and in
+#: [0, pi] (where cos is)
+_HALF = {"asin", "atan", "acsc"}
+_UPPER = {"acos", "asec"}
+
+
+def same_angle(a: sp.Expr, b: sp.Expr, positive: set[str] = frozenset(), seconds: float = 2.0) -> bool | None:
+    """Two inverse functions (``asin(mu/sqrt(1 + mu**2))`` and ``atan(mu)``) decided through the function
+    that both invert on one interval: with both principal values in [-pi/2, pi/2], they are equal iff
+    their sines are (sin is one to one there), and likewise cos on [0, pi]. None for any other pair."""
+    ca, ea = a.as_coeff_Mul()
+    cb, eb = b.as_coeff_Mul()
+    if ca != cb or not (isinstance(ea, sp.Function) and isinstance(eb, sp.Function)):
+        return None
+    fa, fb = type(ea).__name__, type(eb).__name__
+    if fa in _HALF and fb in _HALF:
+        forward = sp.sin
+    elif fa in _UPPER and fb in _UPPER:
+        forward = sp.cos
+    else:
+        return None
+    return is_zero(forward(ea) - forward(eb), positive, seconds)
+
+
+def agrees_to_digits(value: sp.Float, exact_value: sp.Expr, least: int = 3) -> bool:
+    """A decimal typed for a pure number (an angle, a ratio) is right when it agrees with the exact value
+    to every digit typed (its shortest decimal form, at least ``least`` significant digits): within half
+    a unit of its last digit (sympy's evalf, which controls its own error, at 60 digits)."""
+    text = repr(float(value)) if value._prec <= 53 else sp.sstr(value)
+    text = text.lower()
+    mantissa, _, exp = text.partition("e")
+    digits = mantissa.lstrip("-").replace(".", "").lstrip("0")
+    if sp.Rational(text) == exact_value:  # 0.5 is 1/2, whatever its digits
+        return True
+    if len(digits) < least:
+        return False
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    half_unit = sp.Rational(1, 2) * sp.Integer(10) ** (int(exp or 0) - decimals)
+    gap = abs(sp.N(exact_value - sp.Rational(text), 60))
+    return bool(gap.is_Number and gap < half_unit)

@@ -1,0 +1,13 @@
+# target: L
+# family: hints
+# expect: no-credit
+# why: a probe: the theta2'^2 term times 13/10; "too large" or "too small" after each check would bisect the reference coefficient m2 l2^2/2
+# leak: too (large|small)
+from sympy import *
+t = symbols("t")
+m1, m2, l1, l2, g = symbols("m1 m2 l1 l2 g", positive=True)
+th1, th2 = Function("theta1")(t), Function("theta2")(t)
+w1, w2 = th1.diff(t), th2.diff(t)
+T = (m1 + m2)/2*l1**2*w1**2 + Rational(13, 10)*m2/2*l2**2*w2**2 + m2*l1*l2*w1*w2*cos(th1 - th2)
+V = -(m1 + m2)*g*l1*cos(th1) - m2*g*l2*cos(th2)
+L = T - V

@@ -1,0 +1,100 @@
+"""The exact judge (`lagrade.compare.exact`, issue 42): equal is equal in exact arithmetic, whatever
+the form; unequal is unequal however small the difference; outside the class it says so (None)."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+from lagrade.compare.exact import is_zero, outside
+
+m, g, l, t, th, k, x, y, L1 = sp.symbols("m g l t theta k x y L1")
+POSITIVE = {"m", "g", "l", "k"}
+
+ZERO = [
+    sp.sin(th) ** 2 + sp.cos(th) ** 2 - 1,
+    sp.sin(2 * th) - 2 * sp.sin(th) * sp.cos(th),
+    sp.sin(th / 2) ** 2 - (1 - sp.cos(th)) / 2,
+    2 * sp.pi * sp.sqrt(l / g) - 2 * sp.pi / sp.sqrt(g / l),
+    sp.cos(sp.sqrt(g / l) * t) - sp.cos(sp.sqrt(g * l) * t / l),
+    sp.sqrt(2) * sp.sqrt(3) * sp.sqrt(k) - sp.sqrt(6 * k),
+    sp.cosh(th) ** 2 - sp.sinh(th) ** 2 - 1,
+    sp.tan(th) - sp.sin(th) / sp.cos(th),
+    sp.exp(sp.I * th) - sp.cos(th) - sp.I * sp.sin(th),
+    m * g * l * (1 - sp.cos(th)) - 2 * m * g * l * sp.sin(th / 2) ** 2,
+    sp.sqrt(m ** 2) - m,
+    sp.exp(-k * t / (2 * m)) * sp.exp(k * t / m) - sp.exp(k * t / (2 * m)),
+    sp.Float(0.5) * m - m / 2,
+    sp.exp(sp.Rational(1, 3)) ** 3 - sp.E,
+    (x ** 2 - y ** 2) / (x - y) - x - y,
+]
+
+NONZERO = [
+    L1 * sp.Rational(1000001, 1000000) ** sp.Rational(1, 100) - L1,
+    sp.Float("1.000000001") * m - m,
+    m * (1 + sp.Rational(1, 10 ** 80)) - m,
+    sp.sin(th) - th,
+    sp.sqrt(sp.Rational(529, 625) + sp.Rational(1, 10 ** 20)) - sp.Rational(23, 25),
+    sp.cos(sp.sqrt(g / l) * t) - sp.cos(sp.sqrt(g / l) * t * (1 + sp.Rational(1, 10 ** 12))),
+    sp.exp(sp.Rational(1, 3)) ** 3 - sp.E * (1 + sp.Rational(1, 10 ** 40)),
+    sp.exp(th) - 1 - th - th ** 2 / 2,
+]
+
+OUTSIDE = [sp.atan(th) - th, sp.sqrt(x ** 2) - x, sp.Abs(x) - x, sp.log(m) - 1, sp.besselj(0, x),
+           sp.Piecewise((x, x > 0), (0, True)), sp.acos(1 - 2 * sp.sin(g / 2) ** 2) - g]
+
+
+@pytest.mark.parametrize("expr", ZERO, ids=[sp.sstr(e)[:40] for e in ZERO])
+def test_a_rewriting_of_zero_is_zero(expr):
+    assert is_zero(expr, POSITIVE) is True
+
+
+@pytest.mark.parametrize("expr", NONZERO, ids=[sp.sstr(e)[:40] for e in NONZERO])
+def test_a_difference_however_small_is_not_zero(expr):
+    assert is_zero(expr, POSITIVE) is False
+
+
+@pytest.mark.parametrize("expr", OUTSIDE, ids=[sp.sstr(e)[:40] for e in OUTSIDE])
+def test_outside_the_class_it_says_so(expr):
+    assert is_zero(expr, POSITIVE) is None
+    assert outside(expr, POSITIVE)
+
+
+def test_the_decision_does_not_depend_on_the_seed():
+    e = sp.sin(th + k) - sp.sin(th) * sp.cos(k) - sp.cos(th) * sp.sin(k)
+    assert {is_zero(e, POSITIVE, seed=s) for s in range(5)} == {True}
+    assert {is_zero(e + sp.Rational(1, 10 ** 30), POSITIVE, seed=s) for s in range(5)} == {False}
+
+
+@pytest.mark.parametrize("typed, right", [("0.841068670567930", True), ("0.8411", True), ("0.841", True),
+                                          ("0.84", False), ("0.8412", False), ("0.84106867056794", False)])
+def test_a_decimal_for_a_pure_number_is_right_to_every_digit_typed(typed, right):
+    from lagrade.compare.exact import agrees_to_digits
+
+    assert agrees_to_digits(sp.Float(typed), sp.acos(sp.Rational(2, 3))) is right
+
+
+def test_a_decimal_equal_to_the_number_is_right_whatever_its_digits():
+    from lagrade.compare.exact import agrees_to_digits
+
+    assert agrees_to_digits(sp.Float("0.5"), sp.Rational(1, 2))
+    assert not agrees_to_digits(sp.Float("0.5"), sp.Rational(1, 2) + sp.Rational(1, 10 ** 30))
+
+
+def test_two_inverse_functions_are_compared_through_the_function_they_invert():
+    from lagrade.compare.exact import same_angle
+
+    mu = sp.Symbol("mu")
+    assert same_angle(sp.asin(mu / sp.sqrt(1 + mu ** 2)), sp.atan(mu), {"mu"}) is True
+    assert same_angle(sp.atan(2 * mu), sp.atan(mu), {"mu"}) is False
+    assert same_angle(sp.acos(mu), sp.atan(mu), {"mu"}) is None  # no one interval holds both
+
+
+def test_a_pole_inside_the_domain_is_found_with_its_witness():
+    from lagrade.compare.exact import new_singularity
+
+    m1 = sp.Symbol("m1")
+    right = 4 * g / m1
+    assert new_singularity(right * (m1 ** 2 - 2500) / ((m1 - 50) * (m1 + 50)), right, {"m1", "g"}) == "m1 - 50"
+    assert new_singularity(right * (m1 + 50) / (m1 + 50), right, {"m1", "g"}) is None
+    assert new_singularity(right / (m1 + 3), right / (m1 + 3), {"m1", "g"}) is None
