@@ -3,6 +3,7 @@ the judge reads it through `Problem.domains` (issue 42, item 1)."""
 
 from __future__ import annotations
 
+import itertools
 import subprocess
 import sys
 from pathlib import Path
@@ -58,8 +59,8 @@ def test_words_and_intervals_read_exactly():
     assert parse_domain("(-oo, 0]").interval == sp.Interval(-sp.oo, 0)
 
 
-@pytest.mark.parametrize("text", ["positve", "(0, pi/2", "0 < x < 1", "(1, 0)", "[0, oo]", "(0, x)",
-                                  "(0, __import__('os'))", "(0, 2**100)", "(0, 1, 2)", "(0, 1/0)", ""])
+@pytest.mark.parametrize("text", ["positve", "(0, pi/2", "0 < x < 1", "(1, 0)", "[0, oo]", "(0, f(1))",
+                                  "(0, x.y)", "(0, __import__('os'))", "(0, 2**100)", "(0, 1, 2)", "(0, 1/0)", ""])
 def test_a_bad_domain_text_says_what_was_expected(text):
     with pytest.raises(DomainError):
         parse_domain(text)
@@ -142,6 +143,28 @@ def test_a_bad_problem_file_is_one_line_naming_file_symbol_box_and_domain(tmp_pa
     assert str(err.value).startswith(str(path)) and "\n" not in str(err.value)
 
 
+def test_an_end_may_name_a_parameter(tmp_path):
+    """12.17's r lies in (0, l), a string's length; 12.30's Cartesian wire holds while omega*t < pi/2."""
+    p = load_problem_file(write(tmp_path, x='domain = "(0, 2*m)"\nsample = [0.2, 0.9]'))
+    x, m = sp.symbols("x m")
+    d = p.domains()[x]
+    assert d.interval == sp.Interval.open(0, 2 * m) and d.bounds.parameters == {m}
+    assert d.contains(0.9, {m: 0.5}) and not d.contains(1.0, {m: 0.5}) and d.contains(1.5, {m: 1.0})
+    assert list(d.contains(np.array([0.9, 0.9]), {m: np.array([0.5, 0.4])})) == [True, False]
+    assert d.assumptions() == {"real": True, "positive": True} and d.words() == "0 < x < 2*m"
+    with pytest.raises(SpecError, match=r"coordinate x: the sampling range \[0.2, 1.2\] is not inside its domain "
+                                        r"'\(0, 2\*m\)' \(0 < x < 2\*m\) at m = 0.5"):
+        load_problem_file(write(tmp_path, x='domain = "(0, 2*m)"\nsample = [0.2, 1.2]'))
+    with pytest.raises(SpecError, match=r"coordinate x: its domain '\(0, L\)' names L, which is not a parameter"):
+        load_problem_file(write(tmp_path, x='domain = "(0, L)"\nsample = [0.2, 0.9]'))
+    for pid, key, text in [("12.30", "xy", "[0, pi/(2*omega))"), ("12.12", "", "[0, pi/(2*omega))"),
+                           ("12.49", "", "[0, l0/k)"), ("12.17", "", None)]:
+        t = load_problem(pid).domains(key)[sp.Symbol("t")]
+        assert t.bounds.text == (text or "real"), pid
+    r = load_problem("12.17").domains()[sp.Symbol("r")]
+    assert r.interval == sp.Interval.open(0, sp.Symbol("l")), "m2 hangs l - r below the hole: 1/(l - r)**2 in H"
+
+
 def test_positive_false_is_the_real_line_and_the_models_default_inside_their_domains():
     assert Parameter(name="q", positive=False).domain == "real"
     assert Parameter(name="q").domain == "positive" and Parameter(name="q").positive
@@ -155,12 +178,21 @@ def test_every_problem_has_its_boxes_inside_its_domains(pid):
     p = load_problem(pid)
     for s in p.systems:
         for part in [None, *(q.name for q in p.parts if q.system == s.key and q.symbols)]:
-            for sym, d in p.domains(s.key, part).items():
-                if d.sample_box is not None:
-                    assert parse_domain(d.bounds.text).encloses(d.sample_box), (pid, s.key, sym)
+            domains = p.domains(s.key, part)
+            rng = np.random.default_rng(0)
+            for sym, d in domains.items():
+                if d.sample_box is None:
+                    continue
+                # the ends' parameters at their ranges' corners and at random points of them
+                names = sorted(d.bounds.parameters, key=str)
+                boxes = [domains[n].sample_box for n in names]
+                draws = [dict(zip(names, c)) for c in itertools.product(*boxes)]
+                draws += [{n: rng.uniform(*b) for n, b in zip(names, boxes)} for _ in range(10 if names else 0)]
+                for at in draws:
+                    assert d.bounds.encloses(d.sample_box, at), (pid, s.key, sym, at)
 
 
-@pytest.mark.parametrize("pid", ["12.35", "12.8", "12.22"])
+@pytest.mark.parametrize("pid", ["12.35", "12.8", "12.22", "12.17", "12.30", "12.49"])
 def test_the_sampled_points_lie_in_the_physical_domain(pid):
     from lagrade.verdicts.grade import references
 
@@ -170,10 +202,13 @@ def test_the_sampled_points_lie_in_the_physical_domain(pid):
         pts = sample_points(mech, 64, rng_for(pid, "domains"))
         for sym, d in p.domains(s.key).items():
             if sym in pts.values and d.role != "momentum":
-                assert d.contains(pts[sym]).all(), (pid, s.key, sym)
+                assert d.contains(pts[sym], at=pts.values).all(), (pid, s.key, sym)
 
 
 def test_show_prints_the_domains_in_the_students_notation():
     out = subprocess.run([sys.executable, "-m", "lagrade", "show", "12.35"], capture_output=True, text=True,
                          check=True).stdout
     assert "Domain: m, a, c, mu, rho, theta' > 0; rho', theta real" in out
+    out = subprocess.run([sys.executable, "-m", "lagrade", "show", "12.30"], capture_output=True, text=True,
+                         check=True).stdout
+    assert "Domain (xy): m, omega > 0; 0 <= t < pi/(2*omega); x, x', y, y' real" in out

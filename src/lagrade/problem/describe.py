@@ -69,8 +69,10 @@ def show_text(p: Problem) -> str:
 
 def domain_text(p: Problem, key: str = "") -> str:
     """The physical domains of a system's parameters, coordinates and velocities, in the student's
-    notation: ``m, M, g > 0; 0 < alpha < pi/2; theta' > 0; x, x' real``."""
-    return words(d for d in p.domains(key).values() if d.role in ("parameter", "coordinate", "velocity"))
+    notation: ``m, M, g > 0; 0 < alpha < pi/2; theta' > 0; x, x' real`` (and t's, where the scene
+    holds for a while only: ``0 <= t < pi/(2*omega)``)."""
+    return words(d for d in p.domains(key).values() if d.role in ("parameter", "coordinate", "velocity")
+                 or (d.role == "time" and d.bounds.text != "real"))  # a scene that holds for a while only
 
 
 def template_text(p: Problem) -> str:

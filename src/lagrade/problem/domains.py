@@ -30,7 +30,8 @@ WORDS: dict[str, tuple[Any, Any, bool, bool]] = {
 
 #: What a domain may be, for the one-line error a problem file gets.
 EXPECTED = (f"{', '.join(repr(w) for w in WORDS)}, or an interval with open or closed ends such as "
-            "'(0, pi/2)', '[0, oo)', '(-pi, pi]' (ends: numbers, pi, oo, + - * / and ^ or ** to a whole power)")
+            "'(0, pi/2)', '[0, oo)', '(0, l)' (ends: numbers, pi, oo, the problem's parameters, + - * / and ^ "
+            "or ** to a whole power)")
 
 _MAX_TEXT = 120
 
@@ -42,7 +43,8 @@ class DomainError(ValueError):
 
 
 def _end(text: str) -> sp.Expr:
-    """One end of an interval: a real constant built from numbers, pi and oo, no eval."""
+    """One end of an interval: numbers, pi, oo and parameters' names (a string's length ``l``, the
+    time ``pi/(2*omega)`` a rotating wire takes to stand across), no eval."""
     try:
         tree = ast.parse(text.strip().replace("^", "**"), mode="eval")
     except SyntaxError:
@@ -54,6 +56,8 @@ def _end(text: str) -> sp.Expr:
             return sp.Integer(node.value) if isinstance(node.value, int) else sp.Rational(repr(node.value))
         if isinstance(node, ast.Name) and node.id in ("pi", "oo"):
             return sp.pi if node.id == "pi" else sp.oo
+        if isinstance(node, ast.Name):  # a parameter: the problem checks that it is one
+            return sp.Symbol(node.id)
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
             inner = value(node.operand)
             return -inner if isinstance(node.op, ast.USub) else inner
@@ -66,12 +70,16 @@ def _end(text: str) -> sp.Expr:
             if isinstance(node.op, ast.Div) and b == 0:
                 raise DomainError(f"in {text.strip()!r}: division by zero")
             return {ast.Add: a + b, ast.Sub: a - b, ast.Mult: a * b}.get(type(node.op), a / b)
-        raise DomainError(f"cannot read the end {text.strip()!r}: only numbers, pi, oo and + - * / ^")
+        raise DomainError(f"cannot read the end {text.strip()!r}: only numbers, pi, oo, parameters and + - * / ^")
 
     end = value(tree.body)
-    if end is sp.nan or not (end.is_extended_real and end.is_number):
+    if end is sp.nan or (end.is_number and not end.is_extended_real) or end.has(sp.zoo, sp.nan):
         raise DomainError(f"the end {text.strip()!r} is not a real number")
     return end
+
+
+def _finite(end: sp.Expr) -> bool:
+    return end not in (sp.oo, -sp.oo)
 
 
 @dataclass(frozen=True)
@@ -86,12 +94,36 @@ class Bounds:
 
     @property
     def interval(self) -> sp.Interval:
+        """The domain as a sympy `Interval` (its ends may hold parameters: ``Interval(0, l)``)."""
         return sp.Interval(self.lo, self.hi, self.left_open, self.right_open)
 
-    def contains(self, value: Any) -> Any:
+    @property
+    def parameters(self) -> frozenset[sp.Symbol]:
+        """The parameters its ends depend on (none for a constant domain)."""
+        return frozenset(self.lo.free_symbols | self.hi.free_symbols)
+
+    def at(self, values: Mapping[sp.Symbol, Any]) -> Bounds:
+        """The domain with the parameters of its ends given values (floats are taken exactly)."""
+        if not self.parameters:
+            return self
+        subs = {s: sp.Rational(v) if isinstance(v, float) else v for s, v in values.items() if s in self.parameters}
+        return Bounds(self.text, self.lo.xreplace(subs), self.hi.xreplace(subs), self.left_open, self.right_open)
+
+    def contains(self, value: Any, at: Mapping[sp.Symbol, Any] | None = None) -> Any:
         """Whether ``value`` lies in the domain: exactly for a number (a float is its exact binary
-        value), a sympy condition for an expression with symbols, elementwise for an array."""
-        if hasattr(value, "shape") and getattr(value, "shape", ()) != ():
+        value), a sympy condition for an expression with symbols (or ends with parameters not given
+        in ``at``), elementwise for an array (``at`` may hold arrays of the same length then)."""
+        if at is not None and self.parameters:
+            if any(hasattr(v, "shape") and getattr(v, "shape", ()) != () for v in at.values()):
+                import numpy as np
+
+                fn = sp.lambdify(sorted(self.parameters, key=str), [self.lo, self.hi], "numpy")
+                lo, hi = (np.broadcast_to(np.asarray(e, dtype=float), np.shape(value))
+                          for e in fn(*(at[s] for s in sorted(self.parameters, key=str))))
+                v = np.asarray(value, dtype=float)
+                return ((v > lo) if self.left_open else (v >= lo)) & ((v < hi) if self.right_open else (v <= hi))
+            return self.at(at).contains(value)
+        if hasattr(value, "shape") and getattr(value, "shape", ()) != () and not self.parameters:
             import numpy as np
 
             v = np.asarray(value, dtype=float)
@@ -104,27 +136,29 @@ class Bounds:
                 return False
             value = sp.Rational(value) if abs(value) != float("inf") else sp.oo if value > 0 else -sp.oo
         value = sp.sympify(value)
-        if value.free_symbols:
+        if value.free_symbols or self.parameters:
             return self.interval.contains(value)
         if not value.is_extended_real:
             return False
         return bool(self.interval.contains(value))
 
-    def encloses(self, box: tuple[float, float]) -> bool:
-        """Whether the closed sampling box [low, high] lies inside the domain (exact comparison)."""
-        return bool(self.contains(float(box[0]))) and bool(self.contains(float(box[1])))
+    def encloses(self, box: tuple[float, float], at: Mapping[sp.Symbol, Any] | None = None) -> bool:
+        """Whether the closed sampling box [low, high] lies inside the domain (exact comparison), with
+        the parameters of its ends at ``at``."""
+        return all(self.contains(float(x), at) is True for x in box)
 
     def assumptions(self) -> dict[str, bool]:
         """The strongest sympy assumptions the domain gives (``Symbol(name, **assumptions())``):
         real always; positive, nonnegative, negative or nonpositive where an end at 0 or beyond says so."""
         out = {"real": True}
-        if self.lo > 0 or (self.lo == 0 and self.left_open):
+        lo, hi = (e if e.is_number else None for e in (self.lo, self.hi))  # an end with parameters says nothing
+        if lo is not None and (lo > 0 or (lo == 0 and self.left_open)):
             out["positive"] = True
-        elif self.lo == 0:
+        elif lo == 0:
             out["nonnegative"] = True
-        if self.hi < 0 or (self.hi == 0 and self.right_open):
+        if hi is not None and (hi < 0 or (hi == 0 and self.right_open)):
             out["negative"] = True
-        elif self.hi == 0:
+        elif hi == 0:
             out["nonpositive"] = True
         return out
 
@@ -133,9 +167,9 @@ class Bounds:
         Q.positive / Q.nonnegative of the distance to it (0 < alpha < pi/2 is Q.positive(alpha) &
         Q.positive(pi/2 - alpha))."""
         facts = [Q.real(symbol)]
-        if self.lo.is_finite:
+        if _finite(self.lo):
             facts.append((Q.positive if self.left_open else Q.nonnegative)(symbol - self.lo))
-        if self.hi.is_finite:
+        if _finite(self.hi):
             facts.append((Q.positive if self.right_open else Q.nonnegative)(self.hi - symbol))
         return sp.And(*facts)
 
@@ -144,11 +178,11 @@ class Bounds:
         lo, hi = sp.sstr(self.lo), sp.sstr(self.hi)
         low = f"{lo} {'<' if self.left_open else '<='} "
         high = f" {'<' if self.right_open else '<='} {hi}"
-        if self.lo.is_finite and self.hi.is_finite:
+        if _finite(self.lo) and _finite(self.hi):
             return f"{low}{name}{high}"
-        if self.lo.is_finite:
+        if _finite(self.lo):
             return f"{name} {'>' if self.left_open else '>='} {lo}"
-        if self.hi.is_finite:
+        if _finite(self.hi):
             return f"{name}{high}"
         return f"{name} real"
 
@@ -168,7 +202,7 @@ def parse_domain(text: str) -> Bounds:
     left_open, right_open = s[0] == "(", s[-1] == ")"
     if (lo.is_infinite and not left_open) or (hi.is_infinite and not right_open):
         raise DomainError(f"the domain {text!r} is closed at an infinite end: write oo with ( or )")
-    if lo == sp.oo or hi == -sp.oo or not bool(lo < hi):
+    if lo == sp.oo or hi == -sp.oo or (lo.is_number and hi.is_number and not bool(lo < hi)):
         raise DomainError(f"the domain {text!r} is empty: its low end must be below its high end")
     return Bounds(s, lo, hi, left_open, right_open)
 
@@ -190,8 +224,9 @@ class Domain:
     def interval(self) -> sp.Interval:
         return self.bounds.interval
 
-    def contains(self, value: Any) -> Any:
-        return self.bounds.contains(value)
+    def contains(self, value: Any, at: Mapping[sp.Symbol, Any] | None = None) -> Any:
+        """Whether ``value`` is in the domain; ``at``: values of the parameters its ends name."""
+        return self.bounds.contains(value, at)
 
     def assumptions(self) -> dict[str, bool]:
         return self.bounds.assumptions()
@@ -224,7 +259,7 @@ def words(domains: Iterable[Domain]) -> str:
     groups: dict[str, list[str]] = {}
     for d in domains:
         b = d.bounds
-        if b.lo.is_finite and b.hi.is_finite:
+        if _finite(b.lo) and _finite(b.hi):
             groups.setdefault(d.words(), [])
         else:
             groups.setdefault(b.words("\0"), []).append(d.name)

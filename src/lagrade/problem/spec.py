@@ -168,13 +168,14 @@ def _inside(what: str, text: str, box: tuple[float, float], name: str) -> None:
         bounds = parse_domain(text)
     except DomainError as exc:
         raise ValueError(f"{what} {name}: domain {text!r}: {exc}") from None
-    if not bounds.encloses(box):
+    if not bounds.parameters and not bounds.encloses(box):  # with parameters: checked by the problem
         raise ValueError(f"{what} {name}: the sampling range {list(box)} is not inside its domain {text!r} "
                          f"({bounds.words(name)}): draw random values where the physics lives")
 
 
 _DOMAIN_HELP = ('its physical domain: "real", "positive", "nonnegative", "negative", "nonpositive", or an interval '
-                'with open or closed ends in the notation, "(0, pi/2)", "[0, oo)"; the sampling range must lie inside')
+                'with open or closed ends in the notation, "(0, pi/2)", "[0, oo)", "(0, l)" (ends may name '
+                'parameters); the sampling range must lie inside')
 
 
 class Coordinate(_Strict):
@@ -308,6 +309,9 @@ class System(_Strict):
     constraints: list[Constraint] = Field([], description="holonomic constraints, each solved for one coordinate")
     equilibrium: dict[str, str] = Field({}, description="the equilibrium linearized parts expand about")
     horizon: float = Field(2.0, description="time window of trajectory comparisons (and of sampled t)")
+    time_domain: str = Field("real", description="t's physical domain, written as a parameter's `domain`: where "
+                             "the scene's model holds (\"[0, pi/(2*omega))\" while a rotating wire is a graph over "
+                             "x); [0, horizon] must lie inside")
     functions: list[GeneralFunction] = Field(
         [], description="functions of the coordinates left general (`V(r)`): the scene and answers may call them")
     figure: Figure | None = Field(None, description="the scene's figure; without it the coordinates alone are drawn")
@@ -330,6 +334,7 @@ class System(_Strict):
                 raise ValueError(f"system '{self.key}': constraint on unknown coordinate '{c.coordinate}'")
         if self.horizon <= 0:
             raise ValueError("horizon must be positive")
+        _inside(f"system '{self.key}': time", self.time_domain, (0.0, self.horizon), "t")
         fnames = [f.name for f in self.functions]
         if len(set(fnames)) != len(fnames):
             raise ValueError(f"system '{self.key}': function names repeat: {fnames}")
@@ -510,7 +515,35 @@ class Problem(_Strict):
             earlier = [p.name for p in self.parts[:self.parts.index(part)]]
             if part.follows is not None and part.follows not in earlier:
                 raise ValueError(f"part '{part.name}' follows '{part.follows}', which is not an earlier part")
+        self._domains_with_parameters()
         return self
+
+    def _domains_with_parameters(self) -> None:
+        """A domain whose ends name parameters (``(0, l)``): they must be the system's parameters, and
+        the sampling range must lie inside at every corner of their ranges (the ends are monotone in
+        each parameter in the chapter: a length, a time pi/(2*omega))."""
+        import itertools
+
+        for system in self.systems:
+            params = {sp.Symbol(q.name): q.sample for q in self.parameters_of(system.key)}
+            for part in [None, *(p.name for p in self.parts if p.system == system.key and p.symbols)]:
+                for d in self.domains(system.key, part).values():
+                    b = d.bounds
+                    if not b.parameters:
+                        continue
+                    where = f"system '{system.key}': {d.role} {d.name}" if system.key else f"{d.role} {d.name}"
+                    unknown = sorted(str(s) for s in b.parameters if s not in params)
+                    if unknown:
+                        raise ValueError(f"{where}: its domain {b.text!r} names {', '.join(unknown)}, which is not "
+                                         f"a parameter of the system")
+                    names = sorted(b.parameters, key=str)
+                    for corner in itertools.product(*(params[s] for s in names)):
+                        at = dict(zip(names, corner))
+                        ends = b.at(at)
+                        if not bool(ends.lo < ends.hi) or (d.sample_box is not None and not b.encloses(d.sample_box, at)):
+                            shown = ", ".join(f"{s} = {v:g}" for s, v in at.items())
+                            raise ValueError(f"{where}: the sampling range {list(d.sample_box or ())} is not inside "
+                                             f"its domain {b.text!r} ({d.words()}) at {shown}")
 
     def parameters_of(self, key: str) -> list[Parameter]:
         """The problem's parameters and the system's own, in that order."""
@@ -535,7 +568,7 @@ class Problem(_Strict):
             put(qd.name, c.velocity_domain, c.velocity, "velocity", f"{c.name}'")
             put(qdd.name, "real", (-1.0, 1.0), "acceleration", f"{c.name}''")  # drawn there by the sampling
             put(p.name, "real", None, "momentum")  # computed from the state, never drawn
-        put(T.name, "real", (0.0, system.horizon), "time")
+        put(T.name, system.time_domain, (0.0, system.horizon), "time")
         if part is not None:
             asked = self.part(part)
             for name, box in asked.symbol_domains.items():
