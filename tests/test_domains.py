@@ -151,6 +151,8 @@ def test_an_end_may_name_a_parameter(tmp_path):
     assert d.interval == sp.Interval.open(0, 2 * m) and d.bounds.parameters == {m}
     assert d.contains(0.9, {m: 0.5}) and not d.contains(1.0, {m: 0.5}) and d.contains(1.5, {m: 1.0})
     assert list(d.contains(np.array([0.9, 0.9]), {m: np.array([0.5, 0.4])})) == [True, False]
+    with pytest.raises(ValueError, match="names m: give their values"):
+        d.contains(np.array([0.9]))
     assert d.assumptions() == {"real": True, "positive": True} and d.words() == "0 < x < 2*m"
     with pytest.raises(SpecError, match=r"coordinate x: the sampling range \[0.2, 1.2\] is not inside its domain "
                                         r"'\(0, 2\*m\)' \(0 < x < 2\*m\) at m = 0.5"):

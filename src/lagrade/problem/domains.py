@@ -78,6 +78,12 @@ def _end(text: str) -> sp.Expr:
     return end
 
 
+@lru_cache(maxsize=256)
+def _ends_function(lo: sp.Expr, hi: sp.Expr, names: tuple[sp.Symbol, ...]) -> Any:
+    """The ends as a numpy function of their parameters, compiled once per domain."""
+    return sp.lambdify(names, [lo, hi], "numpy")
+
+
 def _finite(end: sp.Expr) -> bool:
     return end not in (sp.oo, -sp.oo)
 
@@ -117,13 +123,16 @@ class Bounds:
             if any(hasattr(v, "shape") and getattr(v, "shape", ()) != () for v in at.values()):
                 import numpy as np
 
-                fn = sp.lambdify(sorted(self.parameters, key=str), [self.lo, self.hi], "numpy")
+                names = sorted(self.parameters, key=str)
                 lo, hi = (np.broadcast_to(np.asarray(e, dtype=float), np.shape(value))
-                          for e in fn(*(at[s] for s in sorted(self.parameters, key=str))))
+                          for e in _ends_function(self.lo, self.hi, tuple(names))(*(at[s] for s in names)))
                 v = np.asarray(value, dtype=float)
                 return ((v > lo) if self.left_open else (v >= lo)) & ((v < hi) if self.right_open else (v <= hi))
             return self.at(at).contains(value)
-        if hasattr(value, "shape") and getattr(value, "shape", ()) != () and not self.parameters:
+        if hasattr(value, "shape") and getattr(value, "shape", ()) != () and self.parameters:
+            raise ValueError(f"the domain {self.text!r} names {', '.join(sorted(map(str, self.parameters)))}: "
+                             f"give their values (at=)")
+        if hasattr(value, "shape") and getattr(value, "shape", ()) != ():
             import numpy as np
 
             v = np.asarray(value, dtype=float)
