@@ -214,3 +214,10 @@ def test_show_prints_the_domains_in_the_students_notation():
     out = subprocess.run([sys.executable, "-m", "lagrade", "show", "12.30"], capture_output=True, text=True,
                          check=True).stdout
     assert "Domain (xy): m, omega > 0; 0 <= t < pi/(2*omega); x, x', y, y' real" in out
+
+
+def test_the_course_page_shows_the_domains_too():
+    from lagrade.uses.server.statement import statement_html
+
+    html = statement_html(load_problem("12.35"))
+    assert "<li>domain: m, a, c, mu, rho, theta&#x27; &gt; 0; rho&#x27;, theta real</li>" in html
