@@ -3,6 +3,7 @@ and what the course server's page shows (the same text, from one place)."""
 
 from __future__ import annotations
 
+from lagrade.problem.domains import words
 from lagrade.problem.spec import KINDS, Problem
 
 
@@ -32,6 +33,9 @@ def show_text(p: Problem) -> str:
                        f"general, or {f.name} = {f.concrete}")
         out.append(f"  effects: {', '.join(s.effects) or 'none'}")
         out.append("")
+    for s in p.systems:  # where each symbol lives: what an answer may rely on (sqrt(m**2) is m)
+        out.append(f"Domain{f' ({s.key})' if s.key else ''}: {domain_text(p, s.key)}")
+    out.append("")
     out.append("Parts (bind these names in answer.py):")
     for part in p.parts:
         alias = f" (also {', '.join(part.aliases)})" if part.aliases else ""
@@ -61,6 +65,14 @@ def show_text(p: Problem) -> str:
     if typing:  # answer.toml and the course page are typed: the spellings before the first try
         out += ["", typing.replace("Typing an answer:", "Typing an answer (answer.toml, the course page):", 1)]
     return "\n".join(out)
+
+
+def domain_text(p: Problem, key: str = "") -> str:
+    """The physical domains of a system's parameters, coordinates and velocities, in the student's
+    notation: ``m, M, g > 0; 0 < alpha < pi/2; theta' > 0; x, x' real`` (and t's, where the scene
+    holds for a while only: ``0 <= t < pi/(2*omega)``)."""
+    return words(d for d in p.domains(key).values() if d.role in ("parameter", "coordinate", "velocity")
+                 or (d.role == "time" and d.bounds.text != "real"))  # a scene that holds for a while only
 
 
 def template_text(p: Problem) -> str:

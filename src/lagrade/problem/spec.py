@@ -13,7 +13,11 @@ import tomllib
 from pathlib import Path
 from typing import Annotated, Any, Literal, NamedTuple, get_args
 
+import sympy as sp
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+
+from lagrade.problem.domains import Domain, DomainError, Role, parse_domain
+from lagrade.problem.symbols import T, StateSymbols
 
 IDENT = r"^[A-Za-z][A-Za-z0-9_]*$"
 #: problem ids are free (any course): letters, digits, ".", "_", "-", starting with a letter or digit
@@ -158,11 +162,32 @@ class _Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
 
+def _inside(what: str, text: str, box: tuple[float, float], name: str) -> None:
+    """A symbol's domain, readable and holding its sampling box: else a one-line error naming both."""
+    try:
+        bounds = parse_domain(text)
+    except DomainError as exc:
+        raise ValueError(f"{what} {name}: domain {text!r}: {exc}") from None
+    if not bounds.parameters and not bounds.encloses(box):  # with parameters: checked by the problem
+        raise ValueError(f"{what} {name}: the sampling range {list(box)} is not inside its domain {text!r} "
+                         f"({bounds.words(name)}): draw random values where the physics lives")
+
+
+_DOMAIN_HELP = ('its physical domain: "real", "positive", "nonnegative", "negative", "nonpositive", or an interval '
+                'with open or closed ends in the notation, "(0, pi/2)", "[0, oo)", "(0, l)" (ends may name '
+                'parameters); the sampling range must lie inside')
+
+
 class Coordinate(_Strict):
-    """A generalized coordinate, with the ranges its random states are drawn from."""
+    """A generalized coordinate: its physical domain and its velocity's, and the ranges its random
+    states are drawn from (inside them)."""
 
     name: Annotated[str, Field(pattern=IDENT, description="the coordinate's name; a function of t in answers")]
     description: str = Field("", description="what it measures, as `lagrade show` prints it")
+    domain: str = Field("real", description=_DOMAIN_HELP.replace("its", "the coordinate's", 1)
+                        + ' (a radius "positive", an angle on a quadrant "(0, pi/2)")')
+    velocity_domain: str = Field("real", description="the velocity's physical domain, written as `domain` "
+                                 "(\"positive\" while the motion keeps one direction, as 12.35's ring does)")
     sample: tuple[float, float] = Field((-1.0, 1.0), description="range of random states [low, high]: keep away "
                                         "from singularities and inside the region where the model holds")
     velocity: tuple[float, float] = Field((-1.0, 1.0), description="range of random velocities [low, high]")
@@ -174,22 +199,50 @@ class Coordinate(_Strict):
             raise ValueError(f"range {list(v)} must be [low, high] with low < high")
         return v
 
+    @model_validator(mode="after")
+    def _ranges_in_domains(self) -> Coordinate:
+        _inside("coordinate", self.domain, self.sample, self.name)
+        _inside("velocity", self.velocity_domain, self.velocity, f"{self.name}'")
+        return self
+
 
 class Parameter(_Strict):
-    """A parameter of the problem; positivity is an assumption students may rely on."""
+    """A parameter of the problem: its physical domain (positive by default: masses, lengths, g,
+    spring constants), which students may rely on, and the range random values are drawn from."""
 
     name: Annotated[str, Field(pattern=IDENT, description="the symbol's name; answers match it by name")]
     description: str = Field("", description="what it is, as `lagrade show` prints it")
-    positive: bool = Field(True, description="students may rely on it being > 0; `sample` must then be > 0")
+    domain: str = Field("positive", description=_DOMAIN_HELP.replace("its", "the parameter's", 1)
+                        + ' (an incline\'s angle "(0, pi/2)", a charge "real")')
+    positive: bool = Field(True, description="whether the domain lies in x > 0, which follows from `domain`; "
+                                             "`positive = false` alone (older files) is `domain = \"real\"`")
     sample: tuple[float, float] = Field((0.5, 2.0), description="range random values are drawn from [low, high]")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _positive_from_domain(cls, data: Any) -> Any:
+        if not isinstance(data, dict):
+            return data
+        data = dict(data)
+        if "domain" not in data:
+            data["domain"] = "real" if data.get("positive", True) is False else "positive"
+            return data
+        try:
+            positive = parse_domain(data["domain"]).assumptions().get("positive", False)
+        except (DomainError, TypeError):
+            return data  # said with the parameter's name below
+        if "positive" in data and data["positive"] is not positive:
+            raise ValueError(f"parameter {data.get('name')}: positive = {str(data['positive']).lower()} contradicts "
+                             f"domain {data['domain']!r}; give the domain alone")
+        data["positive"] = positive
+        return data
 
     @model_validator(mode="after")
     def _range_fits(self) -> Parameter:
         lo, hi = self.sample
         if not lo < hi:
             raise ValueError(f"parameter {self.name}: sample range must have low < high")
-        if self.positive and lo <= 0:
-            raise ValueError(f"parameter {self.name} is positive, so its sample range must be > 0")
+        _inside("parameter", self.domain, self.sample, self.name)
         return self
 
 
@@ -256,6 +309,9 @@ class System(_Strict):
     constraints: list[Constraint] = Field([], description="holonomic constraints, each solved for one coordinate")
     equilibrium: dict[str, str] = Field({}, description="the equilibrium linearized parts expand about")
     horizon: float = Field(2.0, description="time window of trajectory comparisons (and of sampled t)")
+    time_domain: str = Field("real", description="t's physical domain, written as a parameter's `domain`: where "
+                             "the scene's model holds (\"[0, pi/(2*omega))\" while a rotating wire is a graph over "
+                             "x); [0, horizon] must lie inside")
     functions: list[GeneralFunction] = Field(
         [], description="functions of the coordinates left general (`V(r)`): the scene and answers may call them")
     figure: Figure | None = Field(None, description="the scene's figure; without it the coordinates alone are drawn")
@@ -278,6 +334,7 @@ class System(_Strict):
                 raise ValueError(f"system '{self.key}': constraint on unknown coordinate '{c.coordinate}'")
         if self.horizon <= 0:
             raise ValueError("horizon must be positive")
+        _inside(f"system '{self.key}': time", self.time_domain, (0.0, self.horizon), "t")
         fnames = [f.name for f in self.functions]
         if len(set(fnames)) != len(fnames):
             raise ValueError(f"system '{self.key}': function names repeat: {fnames}")
@@ -344,6 +401,9 @@ class Part(_Strict):
     symbol_ranges: dict[str, tuple[float, float]] = Field(
         {}, description="another sampling range for some of `symbols`: an initial position or velocity "
                         "that may be negative, [-1.5, 1.5]")
+    symbol_domain: dict[str, str] = Field(
+        {}, description="the physical domain of some of `symbols`, written as a parameter's `domain` (`{ v0 = "
+                        "\"positive\" }`); the others are real. Their sampling ranges must lie inside")
     initial: dict[str, str] = Field({}, description="trajectory: initial values, keyed q and q_d")
     accelerations: bool = Field(False, description="expression parts: the answer may contain q'' (the part asks a "
                                 "relation between accelerations); otherwise a result with q'' in it is invalid")
@@ -393,6 +453,11 @@ class Part(_Strict):
                 raise ValueError(f"part '{self.name}': symbol_ranges names '{name}', which is not in symbols")
             if not lo < hi:
                 raise ValueError(f"part '{self.name}': the range of {name} must be [low, high] with low < high")
+        for name in self.symbol_domain:
+            if name not in self.symbols:
+                raise ValueError(f"part '{self.name}': symbol_domain names '{name}', which is not in symbols")
+        for name, box in self.symbol_domains.items():
+            _inside(f"part '{self.name}': symbol", self.symbol_domain.get(name, "real"), box, name)
         return self
 
     @property
@@ -450,11 +515,66 @@ class Problem(_Strict):
             earlier = [p.name for p in self.parts[:self.parts.index(part)]]
             if part.follows is not None and part.follows not in earlier:
                 raise ValueError(f"part '{part.name}' follows '{part.follows}', which is not an earlier part")
+        self._domains_with_parameters()
         return self
+
+    def _domains_with_parameters(self) -> None:
+        """A domain whose ends name parameters (``(0, l)``): they must be the system's parameters, and
+        the sampling range must lie inside at every corner of their ranges (the ends are monotone in
+        each parameter in the chapter: a length, a time pi/(2*omega))."""
+        import itertools
+
+        for system in self.systems:
+            params = {sp.Symbol(q.name): q.sample for q in self.parameters_of(system.key)}
+            for part in [None, *(p.name for p in self.parts if p.system == system.key and p.symbols)]:
+                for d in self.domains(system.key, part).values():
+                    b = d.bounds
+                    if not b.parameters:
+                        continue
+                    where = f"system '{system.key}': {d.role} {d.name}" if system.key else f"{d.role} {d.name}"
+                    unknown = sorted(str(s) for s in b.parameters if s not in params)
+                    if unknown:
+                        raise ValueError(f"{where}: its domain {b.text!r} names {', '.join(unknown)}, which is not "
+                                         f"a parameter of the system")
+                    names = sorted(b.parameters, key=str)
+                    for corner in itertools.product(*(params[s] for s in names)):
+                        at = dict(zip(names, corner))
+                        ends = b.at(at)
+                        if not bool(ends.lo < ends.hi) or (d.sample_box is not None and not b.encloses(d.sample_box, at)):
+                            shown = ", ".join(f"{s} = {v:g}" for s, v in at.items())
+                            raise ValueError(f"{where}: the sampling range {list(d.sample_box or ())} is not inside "
+                                             f"its domain {b.text!r} ({d.words()}) at {shown}")
 
     def parameters_of(self, key: str) -> list[Parameter]:
         """The problem's parameters and the system's own, in that order."""
         return [*self.parameters, *self.system(key).parameters]
+
+    def domains(self, key: str = "", part: str | None = None) -> dict[sp.Symbol, Domain]:
+        """Every symbol an answer about system ``key`` may use (its parameters, coordinates, their
+        velocities, accelerations and momenta, t, and the extra `symbols` of ``part``), keyed by the
+        plain sympy symbol the engine uses, with its physical domain and sampling box."""
+        system = self.system(key)
+        out: dict[sp.Symbol, Domain] = {}
+
+        def put(name: str, text: str, box: tuple[float, float] | None, role: Role, words: str | None = None) -> None:
+            sym = sp.Symbol(name)
+            out[sym] = Domain(sym, parse_domain(text), box, role, words or name)
+
+        for q in self.parameters_of(key):
+            put(q.name, q.domain, q.sample, "parameter")
+        state = StateSymbols(tuple(c.name for c in system.coordinates))
+        for c, qd, qdd, p in zip(system.coordinates, state.qd, state.qdd, state.p):
+            put(c.name, c.domain, c.sample, "coordinate")
+            put(qd.name, c.velocity_domain, c.velocity, "velocity", f"{c.name}'")
+            put(qdd.name, "real", (-1.0, 1.0), "acceleration", f"{c.name}''")  # drawn there by the sampling
+            put(p.name, "real", None, "momentum")  # computed from the state, never drawn
+        put(T.name, system.time_domain, (0.0, system.horizon), "time")
+        if part is not None:
+            asked = self.part(part)
+            for name, box in asked.symbol_domains.items():
+                if sp.Symbol(name) not in out or out[sp.Symbol(name)].role == "momentum":  # as the sampling does
+                    put(name, asked.symbol_domain.get(name, "real"), box, "symbol")
+        return out
 
     def system(self, key: str) -> System:
         for s in self.systems:

@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 from html import escape
 
+from lagrade.problem.describe import domain_text
 from lagrade.problem.spec import KINDS, Problem
 
 #: a formula written in the notation of answers: operands joined by * / ^ (** too), + or -
@@ -112,6 +113,7 @@ def statement_html(p: Problem) -> str:
         items = [f"<li>{m.html(c.name)}: {m.html(c.description)}</li>" for c in s.coordinates]
         items += [f"<li>constraint: {m.html(f'{c.coordinate} = {c.value}')}</li>" for c in s.constraints]
         items += [f"<li>{m.html(q.name)}: {m.html(q.description)}</li>" for q in s.parameters]
+        items.append(f"<li>domain: {escape(domain_text(p, s.key))}</li>")  # what an answer may rely on
         out.append(f"<h4>{head}</h4><ul>{''.join(items)}</ul>")
     out.append("<h4>Parts</h4><ul>")
     for part in p.parts:
