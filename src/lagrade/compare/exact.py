@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import math
 import random
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -79,13 +80,76 @@ class _Plan:
     symbols: set[sp.Symbol] = field(default_factory=set)
 
 
-def _assume(expr: sp.Expr, positive: set[str]) -> sp.Expr:
-    """Symbols with the assumptions of their physical domain: parameters positive, the rest real."""
+#: the physical domain as the judge takes it: a set of the names that are positive (the rest real), or
+#: name -> `lagrade.problem.domains.Domain` (its assumptions, and its interval where the ends are numbers)
+DomainLike = "set[str] | frozenset[str] | Mapping[str, Domain]"
+
+
+def _assumptions(domain, name: str) -> dict[str, bool]:
+    if isinstance(domain, (set, frozenset)):
+        return {"positive": True} if name in domain else {"real": True}
+    d = domain.get(name)
+    return d.assumptions() if d is not None else {"real": True}
+
+
+def _interval(domain, name: str) -> sp.Interval | None:
+    """The symbol's domain as an interval with numbers for ends (None: a set, or ends with parameters)."""
+    if isinstance(domain, (set, frozenset)):
+        return None
+    d = domain.get(name)
+    if d is None or d.bounds.parameters:
+        return None
+    return d.interval
+
+
+def _assume(expr: sp.Expr, domain) -> sp.Expr:
+    """Symbols with the assumptions of their physical domain (parameters positive, the state real, and
+    what each problem narrows), and each ``Abs`` or ``sign`` whose argument's sign the domain fixes
+    replaced (``Abs(tan(alpha))`` is ``tan(alpha)`` for 0 < alpha < pi/2)."""
     mapping = {}
     for s in expr.free_symbols:
         if isinstance(s, sp.Symbol):
-            mapping[s] = sp.Symbol(s.name, positive=True) if s.name in positive else sp.Symbol(s.name, real=True)
-    return expr.xreplace(mapping)
+            mapping[s] = sp.Symbol(s.name, **_assumptions(domain, s.name))
+    out = expr.xreplace(mapping)
+    if out.has(sp.Abs, sp.sign):
+        fixed = {}
+        for node in out.atoms(sp.Abs, sp.sign):
+            sign = sign_on_domain(node.args[0], domain)
+            if sign is not None:
+                fixed[node] = sign * node.args[0] if isinstance(node, sp.Abs) else sp.Integer(sign)
+        out = out.xreplace(fixed) if fixed else out
+    return out
+
+
+def sign_on_domain(f: sp.Expr, domain) -> int | None:
+    """+1 or -1 when ``f`` (with assumption-carrying symbols) has that sign on the whole physical domain,
+    None when that is not shown: from the assumptions, or, for a function of one symbol whose domain is
+    an interval, from no root and no break in the open interval (sympy's solveset and continuous_domain)
+    and its sign at one point."""
+    if f.is_positive:
+        return 1
+    if f.is_negative:
+        return -1
+    free = [s for s in f.free_symbols if isinstance(s, sp.Symbol)]
+    if len(free) != 1:
+        return None
+    x = free[0]
+    interval = _interval(domain, x.name)
+    if interval is None or not (interval.start.is_finite and interval.end.is_finite) or interval.measure == 0:
+        return None
+    inner = sp.Interval.open(interval.start, interval.end)
+    try:
+        with time_bound(1.0):
+            if sp.solveset(f, x, inner) != sp.S.EmptySet:
+                return None
+            if sp.calculus.util.continuous_domain(f, x, inner) != inner:
+                return None
+            value = sp.N(f.xreplace({x: (interval.start + interval.end) / 2}), 30)
+    except Exception:  # noqa: BLE001  (sympy gave up: no sign shown)
+        return None
+    if not value.is_Number or value == 0:
+        return None
+    return 1 if value > 0 else -1
 
 
 def _exact_floats(expr: sp.Expr) -> sp.Expr:
@@ -138,7 +202,7 @@ def _exponent(arg: sp.Expr, kind: str) -> list[tuple[str, sp.Basic, int]]:
     return [(w, m, n) for (w, m), n in out.items() if n]
 
 
-def _radical(base: sp.Expr, r: sp.Rational) -> _Radical:
+def _radical(base: sp.Expr, r: sp.Rational, domain=frozenset()) -> _Radical:
     """``base**r`` split into irreducible factors, where the split is the principal branch."""
     if base.has(sp.exp, sp.E, *[getattr(sp, n) for n in (*_TRIG, *_HYP)]):
         raise OutsideClass("a root of a trigonometric or exponential expression")
@@ -158,6 +222,8 @@ def _radical(base: sp.Expr, r: sp.Rational) -> _Radical:
             sign = 1
         elif f.is_nonpositive:
             sign = -1
+        else:
+            sign = sign_on_domain(f, domain)
         if sign == -1:
             f = -f
             if e % 2:
@@ -182,7 +248,7 @@ def _radical(base: sp.Expr, r: sp.Rational) -> _Radical:
     return _Radical(i_power, out)
 
 
-def plan(expr: sp.Expr) -> _Plan:
+def plan(expr: sp.Expr, domain=frozenset()) -> _Plan:
     """Walk ``expr`` once: every radical split, every exponential mapped; raise `OutsideClass`."""
     p = _Plan()
     seen: set[sp.Basic] = set()
@@ -203,7 +269,7 @@ def plan(expr: sp.Expr) -> _Plan:
             if x.is_Integer:
                 stack.append(b)
             elif x.is_Rational:
-                rad = _radical(b, x)
+                rad = _radical(b, x, domain)
                 p.radicals[e] = rad
                 for f, s in rad.factors:
                     if s.denominator != 1:
@@ -353,15 +419,15 @@ class _Evaluator:
         return v
 
 
-def prepare(expr: sp.Expr, positive: set[str] = frozenset()) -> tuple[sp.Expr, _Plan]:
+def prepare(expr: sp.Expr, domain=frozenset()) -> tuple[sp.Expr, _Plan]:
     """``expr`` with its symbols' domain assumptions and exact floats, and its plan (or `OutsideClass`)."""
-    expr = _exact_floats(_assume(sp.sympify(expr), set(positive)))
+    expr = _exact_floats(_assume(sp.sympify(expr), domain))
     if sp.count_ops(expr) > MAX_OPS:
         raise OutsideClass("an expression too large to map")
-    return expr, plan(expr)
+    return expr, plan(expr, domain)
 
 
-def is_zero(expr: sp.Expr, positive: set[str] = frozenset(), seconds: float = 2.0, seed: int = 0) -> bool | None:
+def is_zero(expr: sp.Expr, positive=frozenset(), seconds: float = 2.0, seed: int = 0) -> bool | None:
     """True when ``expr`` is identically zero on the physical domain, False when it is not (exactly),
     None when it is outside the class or the time ran out."""
     try:
@@ -390,7 +456,7 @@ def is_zero(expr: sp.Expr, positive: set[str] = frozenset(), seconds: float = 2.
         return None
 
 
-def outside(expr: sp.Expr, positive: set[str] = frozenset()) -> str | None:
+def outside(expr: sp.Expr, positive=frozenset()) -> str | None:
     """Why ``expr`` is outside the exact class, or None when it is inside."""
     try:
         prepare(expr, positive)
@@ -401,22 +467,72 @@ def outside(expr: sp.Expr, positive: set[str] = frozenset()) -> str | None:
     return None
 
 
-def vanishes_in_domain(f: sp.Expr) -> bool:
-    """A point of the physical domain (each symbol's assumptions: ``_assume``) where ``f`` is exactly
-    zero: the other symbols at fixed domain values, a real root in one symbol ``f`` is polynomial in."""
+def _point(symbols: list[sp.Symbol], domain) -> dict[sp.Symbol, sp.Expr] | None:
+    """An exact point of the physical domain for ``symbols``: an interval's midpoint (its parameter ends at
+    the point's own values), 3/4 where only positive, 1/3 where real; None where no point is found."""
+    out: dict[sp.Symbol, sp.Expr] = {}
+    rest = list(symbols)
+    for _ in range(len(symbols) + 1):
+        later = []
+        for x in rest:
+            d = None if isinstance(domain, (set, frozenset)) else domain.get(x.name)
+            if d is not None:
+                ends = d.bounds.parameters
+                if not ends <= {y for y in out}:
+                    later.append(x)
+                    continue
+                iv = d.bounds.at(out).interval
+                lo, hi = iv.start, iv.end
+                if lo.is_finite and hi.is_finite:
+                    out[x] = (lo + hi) / 2
+                elif lo.is_finite:
+                    out[x] = lo + sp.Rational(3, 4)
+                elif hi.is_finite:
+                    out[x] = hi - sp.Rational(3, 4)
+                else:
+                    out[x] = sp.Rational(1, 3)
+            else:
+                out[x] = sp.Rational(3, 4) if x.is_positive else sp.Rational(1, 3)
+        rest = later
+        if not rest:
+            return out
+    return None
+
+
+def _inside(x: sp.Symbol, value: sp.Expr, point: dict, domain) -> bool:
+    d = None if isinstance(domain, (set, frozenset)) else domain.get(x.name)
+    if d is None:
+        return not x.is_positive or value > 0
+    params = {sp.Symbol(y.name): v for y, v in point.items()}
+    return d.bounds.contains(value, params if d.bounds.parameters else None) is True
+
+
+def vanishes_in_domain(f: sp.Expr, domain=frozenset()) -> bool:
+    """A point of the physical domain where ``f`` is exactly zero: the other symbols at a point of their
+    domains (``_point``), a real root in one symbol ``f`` is polynomial in, inside that symbol's domain."""
     free = sorted(f.free_symbols, key=str)
     for x in free:
-        others = {y: (sp.Rational(3, 4) if y.is_positive else sp.Rational(1, 3)) for y in free if y != x}
-        g = f.xreplace(others)
-        if not g.is_polynomial(x):
+        point = _point([y for y in free if y != x], domain)
+        if point is None:
             continue
-        for root in sp.Poly(g, x).real_roots():
-            if not x.is_positive or root > 0:
+        g = f.xreplace(point)
+        if g.is_polynomial(x):
+            if any(_inside(x, root, point, domain) for root in sp.Poly(g, x).real_roots()):
                 return True
+            continue
+        d = None if isinstance(domain, (set, frozenset)) else domain.get(x.name)
+        where = d.bounds.at({sp.Symbol(y.name): v for y, v in point.items()}).interval if d is not None else sp.S.Reals
+        try:  # cos(2*alpha) on 0 < alpha < pi/2: solveset finds pi/4
+            with time_bound(1.0):
+                roots = sp.solveset(g, x, where)
+                if isinstance(roots, sp.FiniteSet) and len(roots) > 0 or roots.is_empty is False:
+                    return True
+        except Exception:  # noqa: BLE001  (sympy gave up: no witness)
+            continue
     return False
 
 
-def proportional(f: sp.Expr, g: sp.Expr, positive: set[str] = frozenset(), seconds: float = 1.0) -> bool:
+def proportional(f: sp.Expr, g: sp.Expr, positive=frozenset(), seconds: float = 1.0) -> bool:
     """``f`` a constant multiple of ``g`` (decided here: every derivative of ``f/g`` zero)."""
     ratio = f / g
     return all(is_zero(sp.diff(ratio, x), positive, seconds) is True for x in f.free_symbols | g.free_symbols)
@@ -426,23 +542,23 @@ def _factors(e: sp.Expr) -> list[sp.Expr]:
     return [f for f, _ in sp.factor_list(e)[1] if f.free_symbols]
 
 
-def new_singularity(expr: sp.Expr, reference: sp.Expr, positive: set[str] = frozenset(),
+def new_singularity(expr: sp.Expr, reference: sp.Expr, positive=frozenset(),
                     seconds: float = 2.0) -> str | None:
     """A factor of ``expr``'s denominator that vanishes somewhere on the physical domain and is none of
     ``reference``'s: ``right*(m1**2 - 2500)/((m1 - 50)*(m1 + 50))`` is undefined at m1 = 50. The witness
     is an exact root (``vanishes_in_domain``); None when there is none or the test gave up."""
     try:
         with time_bound(seconds):
-            den = sp.fraction(sp.together(_assume(expr, set(positive))))[1]
+            den = sp.fraction(sp.together(_assume(expr, positive)))[1]
             if not den.free_symbols:
                 return None
-            own = _factors(sp.fraction(sp.together(_assume(reference, set(positive))))[1])
+            own = _factors(sp.fraction(sp.together(_assume(reference, positive)))[1])
             for f in _factors(den):
-                if f.is_positive or f.is_negative or not f.is_polynomial():
+                if sign_on_domain(f, positive) is not None or not f.is_polynomial():
                     continue
                 if any(proportional(f, g, positive, seconds) for g in own):
                     continue
-                if vanishes_in_domain(f):
+                if vanishes_in_domain(f, positive):
                     return sp.sstr(f)
     except Exception:  # noqa: BLE001  (sympy failing to factor, or time: no witness)
         return None
@@ -455,7 +571,7 @@ _HALF = {"asin", "atan", "acsc"}
 _UPPER = {"acos", "asec"}
 
 
-def same_angle(a: sp.Expr, b: sp.Expr, positive: set[str] = frozenset(), seconds: float = 2.0) -> bool | None:
+def same_angle(a: sp.Expr, b: sp.Expr, positive=frozenset(), seconds: float = 2.0) -> bool | None:
     """Two inverse functions (``asin(mu/sqrt(1 + mu**2))`` and ``atan(mu)``) decided through the function
     that both invert on one interval: with both principal values in [-pi/2, pi/2], they are equal iff
     their sines are (sin is one to one there), and likewise cos on [0, pi]. None for any other pair."""

@@ -11,12 +11,14 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from lagrade.compare import exact
 from lagrade.verdicts.checkers import admit
 from lagrade.compare.trajectory import ACCURACY, Accuracy
 from lagrade.verdicts.credit import Credit
 from lagrade.derive.general_functions import substitute
 from lagrade.derive.reference import Mechanics, ReferenceCache
 from lagrade.verdicts.result import Method, PartResult
+from lagrade.problem.domains import Domain
 from lagrade.problem.spec import Part, Problem
 from lagrade.problem.symbols import NotationError, nodes_of, to_state
 
@@ -40,6 +42,7 @@ class Context:
     #: which random function stands for the general functions (`lagrade.derive.general_functions`);
     #: 0: the problem's concrete one
     instance: int = 0
+    _domains: dict = field(default_factory=dict, repr=False, compare=False)
 
     @property
     def prove_always(self) -> bool:
@@ -52,6 +55,14 @@ class Context:
     @property
     def positive(self) -> set[str]:
         return {p.name for s in self.problem.systems for p in self.problem.parameters_of(s.key) if p.positive}
+
+    def domain(self, mech: Mechanics) -> dict[str, Domain]:
+        """The physical domain of every symbol of ``mech``'s system, by name (`Problem.domains`): what
+        the exact judge decides on (`lagrade.compare.exact`)."""
+        key = mech.system.key
+        if key not in self._domains:
+            self._domains[key] = {s.name: d for s, d in self.problem.domains(key).items()}
+        return self._domains[key]
 
 
 def result(part: Part, verdict: str, fraction: float, method: Method, feedback: str) -> PartResult:
@@ -159,16 +170,16 @@ def _evaluate_derivatives(expr: sp.Basic) -> sp.Basic:
 _DOMAIN_SETTLED = (sp.re, sp.im, sp.arg, sp.conjugate, sp.Abs, sp.sign, sp.Pow)
 
 
-def _real_parts(expr: sp.Basic, positive: set[str] = frozenset()) -> sp.Basic:
+def _real_parts(expr: sp.Basic, domain=frozenset()) -> sp.Basic:
     """Read on the physical domain: ``re(t)``, ``im(theta)`` (from ``expand(complex=True)``), ``Abs(m1)``,
-    ``sign(m1)``, ``sqrt(m1**2)``: every quantity of a problem is real, and positive where the problem
-    says so, so read them with symbols that say it, then go back to the engine's plain symbols."""
+    ``sign(theta')`` where theta' > 0, ``sqrt(m1**2)``, ``Abs(tan(alpha))`` for 0 < alpha < pi/2: every
+    quantity of a problem is real, with the sign its domain gives (`lagrade.compare.exact._assume`), so
+    read them with symbols that say it, then go back to the engine's plain symbols."""
     if not expr.has(*_DOMAIN_SETTLED):
         return expr
-    real = {s: sp.Symbol(s.name, positive=True) if s.name in positive else sp.Symbol(s.name, real=True)
-            for s in expr.free_symbols if isinstance(s, sp.Symbol)}
-    back = {v: sp.Symbol(k.name) for k, v in real.items()}
-    return expr.xreplace(real).xreplace(back)
+    assumed = exact._assume(expr, domain)
+    back = {s: sp.Symbol(s.name) for s in assumed.free_symbols if isinstance(s, sp.Symbol)}
+    return assumed.xreplace(back)
 
 
 def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates: bool, momenta: bool = False,
@@ -216,8 +227,9 @@ def read_sympy(expr: sp.Expr, part: Part, mech: Mechanics, *, plain_coordinates:
         raise InvalidAnswer(f"{part.name}: {exc}") from None
     if part.kind in MOTION_KINDS:
         _no_state(state, part, mech)
-    positive = {p.name for p in mech.parameters if p.positive}
-    return admit.screen(_real_parts(state, positive), part, mech)
+    domain = {s.name: d for s, d in mech.problem.domains(mech.system.key, part.name).items()} \
+        if getattr(mech, "problem", None) is not None else {p.name for p in mech.parameters if p.positive}
+    return admit.screen(_real_parts(state, domain), part, mech)
 
 
 #: kinds whose answer is a result (a value of the scene's quantities): the accelerations must be solved

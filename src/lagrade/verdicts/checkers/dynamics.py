@@ -490,12 +490,12 @@ EXACT_WRONG = ("agrees with the true one to within floating point at every state
                "a difference (a coefficient or a number in it is not the right one)")
 
 
-def _exactly_zero(exprs: list[sp.Expr], ctx: Context) -> bool | None:
+def _exactly_zero(exprs: list[sp.Expr], ctx: Context, mech: Mechanics) -> bool | None:
     """All of ``exprs`` identically zero on the physical domain (`lagrade.compare.exact`): True; one of
     them not: False; None when one is outside the exact class and none is refuted."""
     out: bool | None = True
     for e in exprs:
-        got = exact.is_zero(e, ctx.positive, ctx.symbolic_seconds)
+        got = exact.is_zero(e, ctx.domain(mech), ctx.symbolic_seconds)
         if got is False:
             return False
         if got is None:
@@ -532,13 +532,13 @@ def _singular_factor(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -> str 
     rule then stands)."""
     try:
         with time_bound(ctx.symbolic_seconds):
-            mine = [f for r in rows for part in _row_factors(r, mech.s.qdd, ctx.positive) for f in part]
-            suspects = [f for f in mine if not (f.is_positive or f.is_negative) and exact.vanishes_in_domain(f)]
+            mine = [f for r in rows for part in _row_factors(r, mech.s.qdd, ctx.domain(mech)) for f in part]
+            suspects = [f for f in mine if not (f.is_positive or f.is_negative) and exact.vanishes_in_domain(f, ctx.domain(mech))]
             if not suspects:
                 return None
-            own = [f for r in mech.EL for part in _row_factors(r, mech.s.qdd, ctx.positive) for f in part]
+            own = [f for r in mech.EL for part in _row_factors(r, mech.s.qdd, ctx.domain(mech)) for f in part]
             for f in suspects:
-                if not any(exact.proportional(f, g, ctx.positive, ctx.symbolic_seconds) for g in own):
+                if not any(exact.proportional(f, g, ctx.domain(mech), ctx.symbolic_seconds) for g in own):
                     return sp.sstr(f)
     except (_OutOfTime, Exception):  # noqa: BLE001  (no proof either way: the sampled states' rule stands)
         return None
@@ -562,8 +562,8 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
         return mech.lagrange_rows(L_s)
 
     if c is not None and np.allclose(c, 1.0, rtol=rtol, atol=0):
-        decided = None if exact.outside(L_s, ctx.positive) else _exactly_zero(
-            [a - b for a, b in zip(student_rows(), mech.EL)], ctx)
+        decided = None if exact.outside(L_s, ctx.domain(mech)) else _exactly_zero(
+            [a - b for a, b in zip(student_rows(), mech.EL)], ctx, mech)
         if decided is not None:
             admit.proved()
             if not decided:
@@ -802,7 +802,7 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     traj, where = None, ""
     if an.fraction >= 1.0 and len(rows) == len(mech.s.qdd) and not an.vanishing_factor:
         acc = _exact_accelerations(mech, ctx)
-        decided = None if acc is None else _exactly_zero([r.xreplace(acc) for r in rows], ctx)
+        decided = None if acc is None else _exactly_zero([r.xreplace(acc) for r in rows], ctx, mech)
         if decided is False:
             admit.proved()
             return graded(part, 0.0, "exact", f"Incorrect: your equations of motion: one {EXACT_WRONG}.")
@@ -846,7 +846,9 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
         problems[0] = f"once the multipliers ({', '.join(lams)}) are eliminated, {problems[0]}"
     if traj is None and len(rows) >= an.n:
         traj = _try(lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows))
-    return _wrong(part, an.fraction, named or _sentence(problems), traj, ctx.credit)
+    # equations with a factor that vanishes in the domain determine no motion there: no equation's share
+    fraction = 0.0 if an.vanishing_factor and not an.wrong else an.fraction
+    return _wrong(part, fraction, named or _sentence(problems), traj, ctx.credit)
 
 
 def _certify_rows(mech: Mechanics, rows: list[sp.Expr], an, compiled: CompiledRows, argv, rates: np.ndarray, pts,
@@ -1149,8 +1151,8 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
                 H_exact = mech.hamiltonian_symbolic
         except (_OutOfTime, Exception):  # noqa: BLE001
             H_exact = None
-        decided = None if H_exact is None or exact.outside(H_s, ctx.positive) else _exactly_zero(
-            [sp.diff(H_s - H_exact, v) for v in [*mech.s.q, *mech.s.p, T]], ctx)
+        decided = None if H_exact is None or exact.outside(H_s, ctx.domain(mech)) else _exactly_zero(
+            [sp.diff(H_s - H_exact, v) for v in [*mech.s.q, *mech.s.p, T]], ctx, mech)
         if decided is not None:
             admit.proved()
             if not decided:

@@ -163,11 +163,11 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
     decided = exact_difference(ctx, mech, student, ref)
     if decided is None and student.has(sp.asin, sp.acos, sp.atan, sp.acsc, sp.asec):
         truth = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
-        decided = None if truth is None else exact.same_angle(student, truth, ctx.positive, ctx.symbolic_seconds)
+        decided = None if truth is None else exact.same_angle(student, truth, ctx.domain(mech), ctx.symbolic_seconds)
     if decided is not None:
         admit.proved(student)
         if decided:
-            pole = exact.new_singularity(student, ref, ctx.positive, ctx.symbolic_seconds)
+            pole = exact.new_singularity(student, ref, ctx.domain(mech), ctx.symbolic_seconds)
             if pole is None:
                 return True, "exact", ""
             return False, "exact", (f"is undefined where {pole} = 0, which lies within the problem's physical range "
@@ -219,7 +219,7 @@ def exact_difference(ctx: Context, mech: Mechanics, student: sp.Expr, ref: sp.Ex
         return None
     if diff.free_symbols & set(mech.s.p):  # momenta are dL/dq' at the state, as the sampled points take them
         diff = diff.xreplace({p: sp.diff(mech.L, v) for p, v in zip(mech.s.p, mech.s.qd)})
-    return exact.is_zero(diff, ctx.positive, ctx.symbolic_seconds)
+    return exact.is_zero(diff, ctx.domain(mech), ctx.symbolic_seconds)
 
 
 def certify_difference(mech: Mechanics, student: sp.Expr, ref: sp.Expr, a: np.ndarray, b: np.ndarray,
