@@ -76,10 +76,12 @@ def test_one_term_of_an_equation_changed_is_caught(row, factor):
     assert verdict(eom_exact=rows) in {"partial", "incorrect"}
 
 
-def test_hamiltonian_plus_function_of_time_is_correct():
+def test_hamiltonian_plus_a_constant_is_correct_plus_a_function_of_time_is_not():
+    """H is the energy up to a constant (issue 42): H + sin(t) gives the same Hamilton's equations, but its
+    value is not the energy, so it is refused; H + 3 is right."""
     m, l = sp.symbols("m l", positive=True)
     th, p = sp.Function("theta")(t), sp.Function("p_theta")(t)
     H = p**2 / (2 * m * l**2) - m * g * l * sp.cos(th)
-    r = lagrade.check("12.43", H=H + sp.sin(t) + 3)
-    assert r.verdicts()["H"] == "correct"
+    assert lagrade.check("12.43", H=H + 3).verdicts()["H"] == "correct"
+    assert lagrade.check("12.43", H=H + sp.sin(t) + 3).verdicts()["H"] == "incorrect"
     assert lagrade.check("12.43", H=2 * H).verdicts()["H"] == "incorrect"

@@ -102,10 +102,12 @@ def test_hint_for_an_extra_term_quotes_the_students_term():
 
 
 def test_hint_for_a_wrong_factor_and_a_wrong_sign():
-    feedback = lagrade.check("12.14", L=_L14(factor_term=1, factor=2), hints=True).parts[0].feedback
-    assert "is too large" in feedback and "2 times" not in feedback, feedback
-    feedback = lagrade.check("12.14", L=_L14(factor_term=1, factor=sp.Rational(7, 9)), hints=True).parts[0].feedback
-    assert "is too small" in feedback and "7/9" not in feedback and "9/7" not in feedback, feedback
+    """The hint names the wrong term, never which way it is off: "too large" after one check and "too
+    small" after the next would bisect the reference's coefficient (issue 42, item 5)."""
+    for factor in (2, sp.Rational(7, 9), sp.Rational(101, 100), sp.Rational(99, 100)):
+        feedback = lagrade.check("12.14", L=_L14(factor_term=1, factor=factor), hints=True).parts[0].feedback
+        assert "not the right size" in feedback, feedback
+        assert not any(w in feedback for w in ("too large", "too small", "2 times", "9/7")), feedback
     feedback = lagrade.check("12.14", L=_L14(factor_term=4, factor=-1), hints=True).parts[0].feedback
     assert "has the wrong sign" in feedback, feedback
 

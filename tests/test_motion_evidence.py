@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import lagrade
-from lagrade.verdicts.checkers import admit, dynamics
+from lagrade.verdicts.checkers import admit, dynamics, values
 from lagrade.compare import trajectory as tr
 from lagrade.compare.trajectory import ACCURACY, Comparison, compare_runs, confirm_refutation
 from lagrade.verdicts.result import PartResult
@@ -33,17 +33,32 @@ def _part(result, name: str = "eom_exact") -> PartResult:
 
 @pytest.fixture(autouse=True)
 def _motion_evidence_alone(request, monkeypatch):
-    """The answers here hide a term too small for the sampled states to see, which the screen's
-    negligible-part rule (`admit._negligible`) already refuses without a proof; these tests are about
-    the evidence that decides where that rule does not reach, so it is switched off for them."""
+    """The answers here hide a term too small for the sampled states to see, which the exact judge
+    (`lagrade.compare.exact`: they are in its class) and the screen's negligible-part rule
+    (`admit._negligible`) refuse first; these tests are about the evidence that decides where neither
+    reaches (an answer outside the exact class), so both are switched off unless a test is marked."""
+    if "exact_judge" not in request.keywords:
+        monkeypatch.setattr(dynamics, "_exactly_zero", lambda *a, **k: None)
+        monkeypatch.setattr(values, "exact_difference", lambda *a, **k: None)
     if "negligible_rule" not in request.keywords:
         monkeypatch.setattr(admit, "_negligible", lambda *a, **k: [])
 
 
+@pytest.mark.exact_judge
+@pytest.mark.negligible_rule
+def test_the_exact_judge_refuses_it_first(beyond_the_box):
+    """As grading runs, the answer is in the exact class: refused in exact arithmetic, certified, with the
+    hidden term the screen flagged named, before any motion is integrated."""
+    part = _part(lagrade.check("12.14", beyond_the_box, accuracy="default"))
+    assert part.verdict == "incorrect" and part.score == 0 and part.method == "exact", part.feedback
+    assert "exact arithmetic" in part.feedback and part.certified is True
+    assert "changes the whole by less than" in part.feedback and "exp(" in part.feedback
+
+
 @pytest.mark.negligible_rule
 def test_the_screen_refuses_it_first(beyond_the_box):
-    """With the negligible-part rule on (as grading runs), the hidden term is named and the answer
-    gets no credit without a proof, before any motion is integrated."""
+    """With the exact judge off (an answer outside its class) and the negligible-part rule on, the hidden
+    term is named and the answer gets no credit without a proof, before any motion is integrated."""
     part = _part(lagrade.check("12.14", beyond_the_box, accuracy="default"))
     assert part.verdict == "incorrect" and part.score == 0, part.feedback
     assert "changes the whole by less than" in part.feedback and "exp(" in part.feedback

@@ -85,6 +85,13 @@ def _wrong(answer):
     return LoadedAnswer(values={**answer.values, "L": answer.values["L"] + extra, "eom": [eom[0], eom[0]]})
 
 
+def _by_motion(answer):
+    """The right L plus a constant outside the exact class (log(2)): the motion decides it, and what it
+    is told names the preset's tolerances (the exact judge's verdicts do not depend on them)."""
+    m1, l1, g = sp.symbols("m1 l1 g", positive=True)
+    return LoadedAnswer(values={**answer.values, "L": answer.values["L"] + g * l1 * m1 * sp.log(2)})
+
+
 def _feedback(result):
     return [(p.part, p.verdict, p.score, p.feedback.split(" evaluations, ")[0]) for p in result.parts]
 
@@ -95,7 +102,7 @@ def test_a_verdict_kept_for_one_setting_is_not_given_for_another(pendulum, setti
     problem, answer = pendulum
     wrong = _wrong(answer)
     memo = VerdictMemo()
-    for a in (answer, wrong):
+    for a in (answer, wrong, _by_motion(answer)):
         grade_values(problem, a, read_as=(), memo=memo)
         kept = grade_values(problem, a, read_as=(), memo=memo, **setting)
         assert _feedback(kept) == _feedback(grade_values(problem, a, read_as=(), **setting))
@@ -107,7 +114,7 @@ def test_the_settings_change_what_these_answers_are_told(pendulum):
     wrong = _wrong(answer)
     for setting in ({"accuracy": "fast"}, {"hints": True}, {"credit": Credit(per_equation=False)}):
         assert any(_feedback(grade_values(problem, a, read_as=(), **setting)) != _feedback(grade_values(problem, a, read_as=()))
-                   for a in (answer, wrong)), setting
+                   for a in (answer, wrong, _by_motion(answer))), setting
 
 
 def test_an_engine_error_is_not_kept(pendulum, monkeypatch):

@@ -30,7 +30,12 @@ def test_feedback_levels():
     assert at_level("no value bound to 'L'", "missing", "verdict") == "no value bound to 'L'"  # what to fix stays
 
 
-def test_lagrade_check_says_it_in_words_and_json_keeps_the_settings():
+def test_lagrade_check_says_it_in_words_and_json_keeps_the_settings(tmp_path):
+    """An L the motion decides (a constant log(2) keeps it outside the exact class): the student reads the
+    evidence in words, --json keeps the integrator's settings for the instructor."""
+    ANSWER = tmp_path / "answer.toml"
+    ANSWER.write_text('L = "(m1 + m2)*l1^2*theta1_d^2/2 + m2*l2^2*theta2_d^2/2 + m2*l1*l2*theta1_d*theta2_d*'
+                      'cos(theta1 - theta2) + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2) + g*l1*m1*log(2)"\n')
     text = CliRunner().invoke(main, ["check", "12.14", str(ANSWER)]).output
     flat = " ".join(text.split())
     assert "gives the same motion as the true one" in flat and "evaluations" not in flat and "DOP853" not in flat

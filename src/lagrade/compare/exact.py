@@ -427,6 +427,33 @@ def prepare(expr: sp.Expr, domain=frozenset()) -> tuple[sp.Expr, _Plan]:
     return expr, plan(expr, domain)
 
 
+@dataclass
+class Witness:
+    """Where an expression was found nonzero: a prime and the residues of the point's variables; the
+    certificate of an exact rejection (kept for the instructor, as `lagrade.compare.certify`'s are)."""
+
+    quantity: str
+    prime: int
+    value: int
+    point: dict[str, int]
+
+    def text(self) -> str:
+        at = ", ".join(f"{k} = {v}" for k, v in list(self.point.items())[:6])
+        more = ", ..." if len(self.point) > 6 else ""
+        return (f"{self.quantity} is {self.value} (not 0) modulo the prime {self.prime} at the point {at}{more} "
+                "(residues; exact arithmetic, lagrade.compare.exact)")
+
+
+#: the last nonzero evaluation `is_zero` made in this thread of grading (`witness`)
+_LAST: list[Witness | None] = [None]
+
+
+def witness(quantity: str) -> Witness | None:
+    """The point of the last exact refutation, named for ``quantity`` (None when there was none)."""
+    w = _LAST[0]
+    return None if w is None else Witness(quantity, w.prime, w.value, w.point)
+
+
 def is_zero(expr: sp.Expr, positive=frozenset(), seconds: float = 2.0, seed: int = 0) -> bool | None:
     """True when ``expr`` is identically zero on the physical domain, False when it is not (exactly),
     None when it is outside the class or the time ran out."""
@@ -440,13 +467,16 @@ def is_zero(expr: sp.Expr, positive=frozenset(), seconds: float = 2.0, seed: int
                 p = _choose_prime(rng, plan_)
                 for _try in range(TRIES):
                     try:
-                        value = _Evaluator(plan_, p, rng).ev(expr)
+                        evaluator = _Evaluator(plan_, p, rng)
+                        value = evaluator.ev(expr)
                     except _Retry:
                         continue
                     break
                 else:
                     return None
                 if value != 0:
+                    _LAST[0] = Witness("", p, value, {str(k) if not isinstance(k, tuple) else f"exp({'I*' if k[0] == 'z' else ''}{k[1]}/N)": v
+                                                      for k, v in evaluator.vars.items()})
                     return False
             return True
     except (OutsideClass, _OutOfTime):

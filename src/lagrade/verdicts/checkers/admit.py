@@ -744,6 +744,8 @@ def _certified(res: PartResult, screen: Screen) -> PartResult:
         return res
     if res.method == "exact":  # decided in exact arithmetic (`lagrade.compare.exact`): a proof in itself
         res.certified = True
+        if screen.certificates:
+            res.certificate = "; ".join(c.text() for c in screen.certificates[:3])
         return res
     if res.method != "numeric":
         return res

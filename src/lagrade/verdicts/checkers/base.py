@@ -178,6 +178,8 @@ def _real_parts(expr: sp.Basic, domain=frozenset()) -> sp.Basic:
     if not expr.has(*_DOMAIN_SETTLED):
         return expr
     assumed = exact._assume(expr, domain)
+    if len(assumed.atoms(sp.Abs, sp.sign)) > len(expr.atoms(sp.Abs, sp.sign)):
+        return expr  # sqrt(u**2) turned into Abs(u) with u's sign unknown: left as the student wrote it
     back = {s: sp.Symbol(s.name) for s in assumed.free_symbols if isinstance(s, sp.Symbol)}
     return assumed.xreplace(back)
 

@@ -486,17 +486,29 @@ def _scaling(E_s: np.ndarray, E_r: np.ndarray, groups: int, per: int, rtol: floa
     return np.array(cs)
 
 
-EXACT_WRONG = ("agrees with the true one to within floating point at every state tried, but exact arithmetic shows "
-               "a difference (a coefficient or a number in it is not the right one)")
+EXACT_WRONG = ("is not the true one: exact arithmetic shows a difference, even where it agrees at every state tried "
+               "(a coefficient or a number in it is not the right one)")
 
 
-def _exactly_zero(exprs: list[sp.Expr], ctx: Context, mech: Mechanics) -> bool | None:
+def _exactly_wrong(part: Part, what: str) -> PartResult:
+    """No credit, decided in exact arithmetic; what the screen had flagged (an inexact number) is said too."""
+    flagged = admit.pending()
+    admit.proved()
+    why = f" ({'; '.join(flagged)})" if flagged else ""
+    return graded(part, 0.0, "exact", f"Incorrect: {what} {EXACT_WRONG}{why}.")
+
+
+def _exactly_zero(exprs: list[sp.Expr], ctx: Context, mech: Mechanics, what: str = "equation {i}") -> bool | None:
     """All of ``exprs`` identically zero on the physical domain (`lagrade.compare.exact`): True; one of
-    them not: False; None when one is outside the exact class and none is refuted."""
+    them not: False, with its witness; None when one is outside the exact class and none is refuted.
+    A scene whose physics is a switch (declared friction, drag, contact) is left to the motion."""
+    if machinery(mech).switching:
+        return None
     out: bool | None = True
-    for e in exprs:
+    for i, e in enumerate(exprs):
         got = exact.is_zero(e, ctx.domain(mech), ctx.symbolic_seconds)
         if got is False:
+            admit.witness(exact.witness(what.format(i=i + 1)))
             return False
         if got is None:
             out = None
@@ -563,11 +575,11 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
 
     if c is not None and np.allclose(c, 1.0, rtol=rtol, atol=0):
         decided = None if exact.outside(L_s, ctx.domain(mech)) else _exactly_zero(
-            [a - b for a, b in zip(student_rows(), mech.EL)], ctx, mech)
+            [a - b for a, b in zip(student_rows(), mech.EL)], ctx, mech, "your Lagrange equation {i} minus the true one")
         if decided is not None:
-            admit.proved()
             if not decided:
-                return graded(part, 0.0, "exact", f"Incorrect: the Lagrange equations your L gives {EXACT_WRONG}.")
+                return _exactly_wrong(part, "the Lagrange equations your L gives")
+            admit.proved()
             return graded(part, 1.0, "exact", "correct: its Lagrange equations are exactly the true ones.")
         proof, traj = _confirm(
             ctx, lambda: proves_all_zero([a - b for a, b in zip(mech.lagrange_rows(L_s), mech.EL)],
@@ -802,10 +814,10 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     traj, where = None, ""
     if an.fraction >= 1.0 and len(rows) == len(mech.s.qdd) and not an.vanishing_factor:
         acc = _exact_accelerations(mech, ctx)
-        decided = None if acc is None else _exactly_zero([r.xreplace(acc) for r in rows], ctx, mech)
+        decided = None if acc is None else _exactly_zero([r.xreplace(acc) for r in rows], ctx, mech,
+                                                             "your equation {i} at the true accelerations")
         if decided is False:
-            admit.proved()
-            return graded(part, 0.0, "exact", f"Incorrect: your equations of motion: one {EXACT_WRONG}.")
+            return _exactly_wrong(part, "your equations of motion: one")
         if decided:
             bad = _singular_factor(rows, mech, ctx)
             admit.proved()
@@ -1152,12 +1164,12 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
         except (_OutOfTime, Exception):  # noqa: BLE001
             H_exact = None
         decided = None if H_exact is None or exact.outside(H_s, ctx.domain(mech)) else _exactly_zero(
-            [sp.diff(H_s - H_exact, v) for v in [*mech.s.q, *mech.s.p, T]], ctx, mech)
+            [sp.diff(H_s - H_exact, v) for v in [*mech.s.q, *mech.s.p, T]], ctx, mech,
+            "a derivative of your H minus the true one")
         if decided is not None:
-            admit.proved()
             if not decided:
-                return graded(part, 0.0, "exact", f"Incorrect: your H {EXACT_WRONG}, or differs from it by more "
-                                                  "than a constant.")
+                return _exactly_wrong(part, "your H (or it differs from the true one by more than a constant)")
+            admit.proved()
             return graded(part, 1.0, "exact", "correct: exactly the true H" + (
                 "" if np.all(np.abs(diff) <= tol) else ", up to a constant") + ".")
 

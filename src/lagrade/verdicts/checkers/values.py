@@ -160,20 +160,24 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
     tolerance and no box; otherwise the sampled points, a proof and the screen's rules decide."""
     a = _evaluate(student, pts, syms)
     b = _evaluate(ref, pts, syms)
+    flagged_before = admit.pending(student)
     decided = exact_difference(ctx, mech, student, ref)
     if decided is None and student.has(sp.asin, sp.acos, sp.atan, sp.acsc, sp.asec):
         truth = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
         decided = None if truth is None else exact.same_angle(student, truth, ctx.domain(mech), ctx.symbolic_seconds)
     if decided is not None:
-        admit.proved(student)
         if decided:
+            admit.proved(student)
             pole = exact.new_singularity(student, ref, ctx.domain(mech), ctx.symbolic_seconds)
             if pole is None:
                 return True, "exact", ""
             return False, "exact", (f"is undefined where {pole} = 0, which lies within the problem's physical range "
                                     "(the correct result is defined there)")
+        admit.proved(student)
         if np.all(agree(a, b)):
-            return False, "exact", EXACTLY_UNEQUAL
+            admit.witness(exact.witness("your value minus the true one"))
+            return False, "exact", (f"is not equal to the correct result: {'; '.join(flagged_before)}" if flagged_before
+                                    else EXACTLY_UNEQUAL)
         certify_difference(mech, student, ref, a, b, pts)
         return False, "exact", _describe_difference(a, b)
     if np.all(agree(a, b)):
