@@ -66,7 +66,9 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
         if not as_json:
             click.echo(f"plot: {plot_file}" if drawn else "plot: no incorrect dynamics part to draw", err=True)
     if as_json:
-        click.echo(result.model_dump_json())
+        from lagrade.verdicts.printable import json_printable
+
+        click.echo(json_printable(result.model_dump_json()))  # the student's text, escaped as JSON does
     else:
         from rich.console import Console
 
