@@ -61,7 +61,7 @@ def test_printable_shows_every_control_and_keeps_lines():
     assert not RAW.search(escaped) and json.loads(escaped) == {"f": PAYLOAD}
 
 
-@pytest.mark.parametrize("name", ["answer.py", "answer.toml"])
+@pytest.mark.parametrize("name", ["answer.py", pytest.param("answer.toml", marks=pytest.mark.slow)])
 def test_check_prints_the_students_text_printable(tmp_path, name):
     path = tmp_path / name
     path.write_text(ANSWER_PY if name.endswith(".py") else ANSWER_TOML, encoding="utf-8")
@@ -73,6 +73,7 @@ def test_check_prints_the_students_text_printable(tmp_path, name):
         assert "\\x1b]52;c;ZWNobyBwd25lZA==\\x07" in out and "\\x9b2K" in out
 
 
+@pytest.mark.slow
 def test_check_json_is_valid_and_holds_the_text_escaped(tmp_path):
     path = tmp_path / "answer.py"
     path.write_text(ANSWER_PY, encoding="utf-8")
@@ -83,6 +84,7 @@ def test_check_json_is_valid_and_holds_the_text_escaped(tmp_path):
     assert "\x1b]52;c;ZWNobyBwd25lZA==\x07" in feedback["L"] and "\x9b2K" in feedback["L"]  # the text itself
 
 
+@pytest.mark.slow
 def test_grade_and_report_print_the_students_text_printable(tmp_path):
     subs = tmp_path / "submissions"
     for student, name, text in (("ann", "12.22.py", ANSWER_PY), ("bob", "12.22.toml", ANSWER_TOML)):
