@@ -94,25 +94,30 @@ def _digits(n: int) -> float:
     return max(abs(n).bit_length() - 1, 0) * _LOG10_2
 
 
-def _coefficient(item: Any) -> sp.Rational | None:
-    """The exact number a sum or a product would combine of ``item`` (its numeric factor), or None."""
+def _split(item: Any) -> tuple[sp.Rational, Any] | None:
+    """(the exact number of ``item``, the rest): what a sum or a product combines of it; None if none."""
     if isinstance(item, sp.Rational):
-        return item
+        return item, sp.S.One
     if isinstance(item, sp.Expr):
-        coeff = item.as_coeff_Mul()[0]
-        return coeff if isinstance(coeff, sp.Rational) else None
+        coeff, rest = item.as_coeff_Mul()
+        return (coeff, rest) if isinstance(coeff, sp.Rational) else None
     return None
 
 
 def check_combined(items: Sequence[Any], product: bool) -> None:
     """Refuse a sum or a product (``product``) of ``items`` whose exact numbers would combine into a
     number beyond ``MAX_NUMBER_DIGITS``, before sympy multiplies them: a product's numbers multiply
-    (digits add), a sum's denominators do (``1/2^300 + 1/3^300``) while its numerators add."""
-    coeffs = [c for c in map(_coefficient, items) if c is not None]
+    (digits add); a sum adds the numbers of like terms (``1/2^300 + 1/3^300``, ``g/2^300 + g/3^300``),
+    whose denominators multiply while their numerators add."""
+    split = [s for s in map(_split, items) if s is not None]
     if product:
-        digits = math.fsum(_digits(c.p) + _digits(c.q) for c in coeffs)
+        digits = math.fsum(_digits(c.p) + _digits(c.q) for c, _ in split)
     else:
-        digits = max((_digits(c.p) for c in coeffs), default=0.0) + math.fsum(_digits(q) for q in {c.q for c in coeffs})
+        like: dict[Any, list[sp.Rational]] = {}
+        for c, rest in split:
+            like.setdefault(rest, []).append(c)
+        digits = max((max(_digits(c.p) for c in cs) + math.fsum(_digits(q) for q in {c.q for c in cs})
+                      for cs in like.values()), default=0.0)
     if digits > MAX_NUMBER_DIGITS:
         raise RebuildError(f"number too large: a {'product' if product else 'sum'} with about {_about(round(digits))} "
                            f"digits (limit {MAX_NUMBER_DIGITS})")

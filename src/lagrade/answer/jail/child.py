@@ -32,13 +32,13 @@ from pydantic import BaseModel, ConfigDict
 
 import lagrade.answer
 from lagrade.answer.jail.rebuild import EncodedValue, expr_nodes, srepr_text
-from lagrade.problem.limits import MAX_INT_ABS
 from lagrade.answer.jail.screen import (
     ALLOWED_MODULES_TEXT,
     FORBIDDEN_ATTRIBUTES,
     AnswerProblem,
     module_allowed,
 )
+from lagrade.problem.limits import MAX_INT_ABS
 
 
 STDOUT_KEEP = 2000
