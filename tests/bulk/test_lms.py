@@ -334,6 +334,27 @@ def test_anonymous_underscored_late_and_zipped_downloads(tmp_path):
     assert "(2 late)" in res.output
 
 
+def test_anonymous_ids_that_differ_in_case_are_two_students(tmp_path):
+    """Canvas's anonymous ids are case-sensitive (issue 43, item 6): they were lower-cased, so
+    ``anon_AbC12`` and ``anon_abc12`` merged into one folder and one student's file was lost. Each keeps
+    its case and its own folder, and the folders differ on a case-insensitive disk (macOS) as well."""
+    import json
+
+    dl = tmp_path / "download"
+    dl.mkdir()
+    (dl / "anon_AbC12_9101_12.3.py").write_text("L = 'first'\n")
+    (dl / "anon_abc12_9102_12.3.py").write_text("L = 'second'\n")
+    res = _import(dl, tmp_path / "out")
+    assert res.exit_code == 0, res.output
+    files = _files(tmp_path / "out")
+    assert sorted(files.values()) == ["L = 'first'\n", "L = 'second'\n"], files
+    folders = {Path(name).parent.name for name in files}
+    assert len({f.casefold() for f in folders}) == 2, folders
+    lms = json.loads((tmp_path / "out" / ".lagrade-import.json").read_text())["students"]
+    assert sorted(v["anonymous_id"] for v in lms.values()) == ["AbC12", "abc12"]
+    assert {Path(name).parent.name: text for name, text in files.items()}["anon_AbC12"] == "L = 'first'\n"
+
+
 def test_the_late_marker_reaches_the_gradebook(tmp_path):
     dl = tmp_path / "download"
     dl.mkdir()

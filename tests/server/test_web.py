@@ -84,6 +84,17 @@ def test_submit_shows_verdicts_and_earlier_attempts(graded):
     assert other.get(f"/p/12.22?attempt={attempts[0]}").status_code == 404  # not someone else's
 
 
+def test_preview_of_a_number_too_large_to_print_says_why(quiet_app):
+    """``g*9^4999`` passed every reader bound and died printing (issue 43, item 4): the preview was empty,
+    neither text nor error. It is refused with the bound named, as a check refuses it."""
+    from lagrade.problem.limits import MAX_NUMBER_DIGITS
+
+    app, client = quiet_app
+    browser, csrf = _browser(app, client, "alice")
+    for value in ("g*9^4999", r"g \cdot 9^{4999}"):
+        r = browser.post("/api/v1/problems/12.22/preview", headers=csrf, json={"part": "L", "value": value}).json()
+        assert r["error"] and f"limit {MAX_NUMBER_DIGITS}" in r["error"] and "\n" not in r["error"], r
+
 def test_preview_is_bounded(quiet_app):
     app, client = quiet_app
     browser, csrf = _browser(app, client, "alice")

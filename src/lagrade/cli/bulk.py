@@ -27,7 +27,9 @@ class GradebookError(click.ClickException):
     exit_code = 2
 
     def show(self, file=None) -> None:  # noqa: ARG002
-        click.echo(f"lagrade: {self.message}", err=True)
+        from lagrade.verdicts.printable import printable
+
+        click.echo(f"lagrade: {printable(self.message)}", err=True)  # it may name a student's folder or file
 
 
 def _gradebook_error(db: Path, exc: Exception, hint: str) -> GradebookError:
@@ -119,8 +121,10 @@ def grade(submissions: Path, assignment_path: Path, db: Path | None, workers: in
               + (f" ({rate:.0f} per minute)" if report.todo else "") + f" -> {db}")
     if report.removed:
         out.print(f"{report.removed} earlier results removed: their files are gone")
-    for s in report.skipped[:20]:
-        out.print(f"  skipped {s.path}: {s.reason}")
+    from lagrade.verdicts.printable import printable
+
+    for s in report.skipped[:20]:  # a student's folder and file names: printable, never markup
+        out.print(printable(f"  skipped {s.path}: {s.reason}"), markup=False)
     if len(report.skipped) > 20:
         out.print(f"  ... and {len(report.skipped) - 20} more (lagrade export {db} --format skipped)")
     if summary:
@@ -287,6 +291,10 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
     if bom:
         text = "\ufeff" + text
     if output is None:
+        if sys.stdout.isatty():  # shown, not piped: what students wrote (feedback, names) made printable
+            from lagrade.verdicts.printable import printable
+
+            text = printable(text)
         click.echo(text, nl=False)
     else:
         output.write_text(text, encoding="utf-8")
@@ -380,8 +388,10 @@ def import_(download: Path, assignment_path: Path, output: Path, roster: Path | 
     finally:
         if scratch is not None:
             shutil.rmtree(scratch, ignore_errors=True)
-    for note in report.notes:
-        click.echo(f"  {note}")
+    from lagrade.verdicts.printable import printable
+
+    for note in report.notes:  # they name the download's files, as students named them
+        click.echo(printable(f"  {note}"))
     if not report.students:
         raise GradebookError(f"nothing imported from {download}: no file in it is an answer to {a.name} in a Canvas "
                              "(<name>_<user id>_<id>_<file>), Gradescope (submission_<id>/) or Moodle "

@@ -28,7 +28,7 @@ from lagrade.cli.common import fail, leave, problems_option
 @click.option("--credit", "credit_file", type=click.Path(exists=True, path_type=Path),
               help="TOML file with a [credit] table changing the partial-credit defaults.")
 @click.option("--plot", "plot_file", type=click.Path(path_type=Path),
-              help="PNG with your motion against the true one for each incorrect dynamics part.")
+              help="PNG with your motion against the true one for each incorrect dynamics part (in a folder that exists).")
 @click.option("--grading-seconds", type=click.FloatRange(min=0, min_open=True), default=None,
               help="CPU seconds to grade the values once the file has run (default: bulk grading's grading_seconds).")
 @click.option("--server", help="Have this course server grade it (http://host:8000); see docs/server.md.")
@@ -44,6 +44,13 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
         leave(check_on_server(server, token, problem_id, answer, as_json))
     if not answer.is_file():
         fail(f"{answer}: no such answer file", as_json)
+    if plot_file is not None:  # before grading, and no folder is made: a typo must not become a tree of folders
+        folder = plot_file.parent
+        if not folder.exists():
+            fail(f"--plot {plot_file}: the folder {folder} does not exist (create it, or give a path in a folder "
+                 f"that exists)", as_json)
+        if not folder.is_dir():
+            fail(f"--plot {plot_file}: {folder} is not a folder", as_json)
     from lagrade.verdicts.credit import load_credit
 
     try:
@@ -62,11 +69,16 @@ def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tup
     if plot_file is not None:
         from lagrade.verdicts.plot import plot_result
 
-        drawn = plot_result(result, plot_file)
+        try:
+            drawn = plot_result(result, plot_file)
+        except OSError as exc:  # not writable, or the folder went away meanwhile
+            fail(f"--plot {plot_file}: cannot write it ({exc.strerror or exc})", as_json)
         if not as_json:
             click.echo(f"plot: {plot_file}" if drawn else "plot: no incorrect dynamics part to draw", err=True)
     if as_json:
-        click.echo(result.model_dump_json())
+        from lagrade.verdicts.printable import json_printable
+
+        click.echo(json_printable(result.model_dump_json()))  # the student's text, escaped as JSON does
     else:
         from rich.console import Console
 

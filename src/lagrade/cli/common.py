@@ -45,8 +45,10 @@ def leave(code: int) -> NoReturn:
 
 def fail(message: str, as_json: bool) -> NoReturn:
     """A one-line error (or one JSON object) and exit code 2: the answer or the arguments were unusable."""
+    from lagrade.verdicts.printable import printable
+
     if as_json:
-        click.echo(json.dumps({"error": message}))
+        click.echo(json.dumps({"error": message}))  # ASCII: every control character escaped
     else:
-        click.echo(f"lagrade: {message}", err=True)
+        click.echo(f"lagrade: {printable(message)}", err=True)
     sys.exit(2)

@@ -189,7 +189,9 @@ def check_on_server(server: str, token: str | None, problem_id: str, answer: Pat
         if as_json:
             click.echo(json.dumps({"error": message}))
         else:
-            click.echo(f"lagrade: {message}", err=True)
+            from lagrade.verdicts.printable import printable
+
+            click.echo(f"lagrade: {printable(message)}", err=True)
         return 2
     extra = {k: out[k] for k in ("rules", "late", "penalty") if k in out}  # the course's rules, as the server applied them
     if as_json:
@@ -205,7 +207,10 @@ def check_on_server(server: str, token: str | None, problem_id: str, answer: Pat
         said = [out[k] for k in ("late", "penalty") if out.get(k)]
         if rules.get("attempts_allowed"):
             said.append(f"attempt {rules['attempt']} of {rules['attempts_allowed']}")
-        click.echo(f"submission {out.get('submission_id')} on {server}" + "".join(f"; {s}" for s in said), err=True)
+        from lagrade.verdicts.printable import printable
+
+        click.echo(printable(f"submission {out.get('submission_id')} on {server}" + "".join(f"; {s}" for s in said)),
+                   err=True)
     if out.get("outcome") == "failed":
         return 2
     return 0 if result.full_marks else 1

@@ -22,8 +22,14 @@ MAX_DEPTH = 100
 MAX_INT_ABS = 10**60
 #: digits of all integer literals of one formula together
 MAX_TOTAL_INT_DIGITS = 200_000
-#: digits of any exact number a power may make: ``(3*g*x)**n`` has 3**n in it
-MAX_POWER_DIGITS = 10_000
+#: digits of any exact number an answer holds (a numerator or a denominator), however it was made: a
+#: power (``(3*g*x)**n`` has 3**n in it), a product of powers, a sum of fractions. Far below the 4300
+#: digits Python turns an int into text (``sys.get_int_max_str_digits``), so that every stage after
+#: the reader (the echo, the feedback, JSON, the gradebook, the preview) prints what the engine makes
+#: of a few such numbers multiplied: ``g*9^4999`` (4771 digits) passed a bound of 10 000 and died there
+MAX_NUMBER_DIGITS = 1_000
+#: the name the power check has always given it
+MAX_POWER_DIGITS = MAX_NUMBER_DIGITS
 #: the largest exact exponent a power of anything but a plain number may have, nested powers
 #: counted by the product of their exponents: ``((x**a)**b)`` is x**(a*b)
 MAX_EXPONENT = 1_000

@@ -44,6 +44,7 @@ from lagrade.problem.limits import (  # every bound in one place; re-exported: t
     MAX_INT_ABS,
     MAX_NAME_CHARS,
     MAX_NODES,
+    MAX_NUMBER_DIGITS,
     MAX_POWER_DIGITS,
     MAX_TEXT_CHARS,
     MAX_TOTAL_INT_DIGITS,
@@ -84,8 +85,53 @@ def check_power(base: Any, exp: Any) -> None:
         raise RebuildError(f"exponent too large: a power to the {_about(exponent * n)} "
                            f"(nested powers multiply their exponents; limit {MAX_EXPONENT})")
     if digits * n > MAX_POWER_DIGITS:
-        raise RebuildError(f"number too large: a power with about {_about(digits * n)} digits "
+        raise RebuildError(f"number too large: a power with about {_about(round(digits * n))} digits "
                            f"(limit {MAX_POWER_DIGITS})")
+
+
+def _digits(n: int) -> float:
+    """log10 of ``n`` (0 for 0 and 1), from its bits: never its text (which Python refuses past 4300 digits)."""
+    return max(abs(n).bit_length() - 1, 0) * _LOG10_2
+
+
+def _split(item: Any) -> tuple[sp.Rational, Any] | None:
+    """(the exact number of ``item``, the rest): what a sum or a product combines of it; None if none."""
+    if isinstance(item, sp.Rational):
+        return item, sp.S.One
+    if isinstance(item, sp.Expr):
+        coeff, rest = item.as_coeff_Mul()
+        return (coeff, rest) if isinstance(coeff, sp.Rational) else None
+    return None
+
+
+def check_combined(items: Sequence[Any], product: bool) -> None:
+    """Refuse a sum or a product (``product``) of ``items`` whose exact numbers would combine into a
+    number beyond ``MAX_NUMBER_DIGITS``, before sympy multiplies them: a product's numbers multiply
+    (digits add); a sum adds the numbers of like terms (``1/2^300 + 1/3^300``, ``g/2^300 + g/3^300``),
+    whose denominators multiply while their numerators add."""
+    split = [s for s in map(_split, items) if s is not None]
+    if product:
+        digits = math.fsum(_digits(c.p) + _digits(c.q) for c, _ in split)
+    else:
+        like: dict[Any, list[sp.Rational]] = {}
+        for c, rest in split:
+            like.setdefault(rest, []).append(c)
+        digits = max((max(_digits(c.p) for c in cs) + math.fsum(_digits(q) for q in {c.q for c in cs})
+                      for cs in like.values()), default=0.0)
+    if digits > MAX_NUMBER_DIGITS:
+        raise RebuildError(f"number too large: a {'product' if product else 'sum'} with about {_about(round(digits))} "
+                           f"digits (limit {MAX_NUMBER_DIGITS})")
+
+
+def check_numbers(value: Any) -> None:
+    """Refuse a value holding an exact number (numerator or denominator) beyond ``MAX_NUMBER_DIGITS``
+    digits, however it was made: what every stage after the reader must be able to print."""
+    for e in expressions_in(value):
+        for number in e.atoms(sp.Rational):
+            digits = max(_digits(number.p), _digits(number.q))
+            if digits > MAX_NUMBER_DIGITS:
+                raise RebuildError(f"number too large: an exact number of about {_about(round(digits))} digits "
+                                   f"(limit {MAX_NUMBER_DIGITS})")
 
 
 def _about(n: float) -> str:
@@ -99,7 +145,7 @@ def _exact_size(e: Any) -> tuple[float, int]:
     subexpression, so that building a tree measures each of its nodes once."""
     if isinstance(e, sp.Rational):
         size = max(abs(e.p), abs(e.q))
-        return (size.bit_length() * _LOG10_2 if size > 1 else 0.0), 1
+        return (math.log10(size) if size > 1 else 0.0), 1
     digits, exponent = 0.0, 1
     for arg in getattr(e, "args", ()):
         d, x = _exact_size(arg)
@@ -425,6 +471,7 @@ class _Reader:
         for op, operand in reversed(right):
             value = self.expr(operand, depth)
             items.append(-value if isinstance(op, ast.Sub) else 1 / value if isinstance(op, ast.Div) else value)
+        check_combined(items, product=kind[0] is not ast.Add)
         return sp.Add(*items) if kind[0] is ast.Add else sp.Mul(*items)
 
     def name(self, name: str) -> Any:

@@ -19,16 +19,17 @@ from lagrade.verdicts.result import CheckResult
 
 
 def plot_result(result: CheckResult, path: Path) -> bool:
-    """Draw every incorrect dynamics part of ``result`` into one PNG; False when there is none."""
+    """Draw every incorrect dynamics part of ``result`` into one PNG in an existing folder; False when
+    there is none."""
     fig = _figure(result)
     if fig is None:
         return False
     import matplotlib.pyplot as plt
 
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    try:  # into a folder that exists: none is made (OSError otherwise)
+        fig.savefig(Path(path), dpi=110)
+    finally:
+        plt.close(fig)
     return True
 
 

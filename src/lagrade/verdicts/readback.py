@@ -51,6 +51,19 @@ def _clip(text: str) -> str:
     return text if len(text) <= MAX_CHARS else text[:MAX_CHARS] + " …"
 
 
+#: what is shown of a value no printer could print (a number past Python's int-to-text limit, which the
+#: readers keep answers far below: lagrade.problem.limits.MAX_NUMBER_DIGITS)
+UNPRINTABLE = "(too large to show)"
+
+
+def _plain(value: object) -> str:
+    """``str(value)``, clipped; never an exception: printing must never stop grading."""
+    try:
+        return _clip(str(value))
+    except Exception:  # noqa: BLE001
+        return UNPRINTABLE
+
+
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
@@ -144,7 +157,7 @@ def as_unicode(value: object) -> str:
             return _clip("\n".join(show(v) for v in value))
         return _clip(show(value))
     except Exception:  # noqa: BLE001  (printing must never stop grading)
-        return _clip(str(value))
+        return _plain(value)
 
 
 def as_latex(value: object) -> str:
@@ -160,4 +173,4 @@ def as_latex(value: object) -> str:
             return _clip(r",\quad ".join(show(v) for v in value))
         return _clip(show(value))
     except Exception:  # noqa: BLE001
-        return _clip(str(value))
+        return _plain(value)

@@ -92,8 +92,11 @@ _STYLE = {"correct": "green", "partial": "yellow", "incorrect": "red", "missing"
 def table(result: CheckResult) -> Table:
     from rich import box
     from rich.table import Table
+    from rich.text import Text
 
-    t = Table(title=f"Problem {result.problem}", box=box.SIMPLE_HEAVY, show_lines=False, expand=False)
+    from lagrade.verdicts.printable import plain
+
+    t = Table(title=plain(f"Problem {result.problem}"), box=box.SIMPLE_HEAVY, show_lines=False, expand=False)
     t.add_column("part", no_wrap=True)
     t.add_column("verdict", no_wrap=True)
     t.add_column("score", justify="right", no_wrap=True)
@@ -102,7 +105,8 @@ def table(result: CheckResult) -> Table:
     for p in result.parts:
         style = _STYLE[p.verdict]
         name = f"{p.part} (extra)" if p.extra else p.part
-        t.add_row(name, f"[{style}]{p.verdict}[/]", f"{p.score:g}/{p.max_score:g}", p.method, p.feedback)
+        t.add_row(plain(name), Text(p.verdict, style=style), f"{p.score:g}/{p.max_score:g}", p.method,
+                  plain(p.feedback))  # the feedback quotes the student: never markup, never a control
     t.caption = f"total {result.score:g} / {result.max_score:g}"
     if any(p.extra for p in result.parts):
         t.caption += " (extra parts, not asked by the book, are not counted)"
@@ -110,13 +114,16 @@ def table(result: CheckResult) -> Table:
 
 
 def render(result: CheckResult, console: Console, read_as: bool = True) -> None:
+    """The result for a terminal: every text that may quote the student made printable on the way."""
+    from lagrade.verdicts.printable import printable
+
     for problem in result.problems:
-        console.print(problem, style="yellow", highlight=False, markup=False)
+        console.print(printable(problem), style="yellow", highlight=False, markup=False)
     if read_as and any(p.read_as_text for p in result.parts):
         console.print("Your answer, as lagrade read it:", style="bold")
         for p in result.parts:
             if p.read_as_text:
-                lines = p.read_as_text.splitlines() or [""]
+                lines = printable(p.read_as_text).split("\n")
                 if len(lines) == 1:
                     console.print(f"  {p.part} = {lines[0]}", highlight=False, markup=False, soft_wrap=True)
                 else:

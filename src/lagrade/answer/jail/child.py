@@ -38,6 +38,7 @@ from lagrade.answer.jail.screen import (
     AnswerProblem,
     module_allowed,
 )
+from lagrade.problem.limits import MAX_INT_ABS
 
 
 STDOUT_KEEP = 2000
@@ -597,6 +598,8 @@ def _encode(value: Any, depth: int) -> dict[str, Any]:
             return {"kind": "list", "items": [_encode(v, depth + 1) for v in value]}
         return {"kind": "list", "items": [_encode(list(r), depth + 1) for r in value.tolist()]}
     if isinstance(value, sp.Basic):
+        if any(max(abs(n.p), n.q) > MAX_INT_ABS for n in value.atoms(sp.Rational)):  # the grader refuses it:
+            raise _EncodeError(f"holds an integer too large (more than {len(str(MAX_INT_ABS)) - 1} digits)")  # say so
         nodes = expr_nodes(value)
         return {"kind": "expr", "nodes": nodes} if nodes is not None else {"kind": "expr", "srepr": srepr_text(value)}
     if isinstance(value, int):

@@ -37,6 +37,7 @@ from lagrade.problem.notation import (  # the limits on any untrusted math text,
     MAX_NODES,
     MAX_TOTAL_INT_DIGITS,
     RebuildError,
+    check_combined,
     check_derivative,
     check_int,
     check_name,
@@ -177,6 +178,16 @@ def _derivative(expr: Any, *variables: Any) -> sp.Expr:
     return sp.Derivative(expr, *variables)
 
 
+def _add(*args: Any) -> Any:
+    check_combined(args, product=False)
+    return sp.Add(*args)
+
+
+def _mul(*args: Any) -> Any:
+    check_combined(args, product=True)
+    return sp.Mul(*args)
+
+
 def _matrix(rows: Any) -> sp.ImmutableMatrix:
     if not isinstance(rows, list) or not all(isinstance(r, list) for r in rows):
         raise RebuildError("Matrix() needs a list of rows")
@@ -196,7 +207,7 @@ def _const(value: Any):
 _CONSTRUCTORS: dict[str, Any] = {
     "Symbol": _symbol, "Dummy": _dummy, "Function": _function,
     "Integer": _integer, "Rational": _rational, "Float": _float, "Pow": _pow,
-    "Add": sp.Add, "Mul": sp.Mul, "Derivative": _derivative, "Tuple": sp.Tuple,
+    "Add": _add, "Mul": _mul, "Derivative": _derivative, "Tuple": sp.Tuple,
     # relations are rebuilt as written: srepr shows them after the student's own evaluation
     "Equality": _unevaluated(sp.Eq), "Eq": _unevaluated(sp.Eq), "Unequality": _unevaluated(sp.Ne),
     "Ne": _unevaluated(sp.Ne), "StrictLessThan": _unevaluated(sp.Lt),

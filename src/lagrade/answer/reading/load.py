@@ -356,8 +356,9 @@ _TIME = sp.Symbol("t")
 def refusal(value: object, kind: str) -> str | None:
     """Why ``value`` cannot be graded as a part of ``kind`` (one sentence), or None: a value no
     physical quantity takes, a function the engine cannot differentiate in what it differentiates,
-    or an expression that multiplies out to more terms than the limit (``lagrade.problem.limits``)."""
-    from lagrade.problem.notation import check_expansion, expressions_in
+    or an expression that multiplies out to more terms than the limit, or holds a number with more digits
+    than the limit (``lagrade.problem.limits``)."""
+    from lagrade.problem.notation import check_expansion, check_numbers, expressions_in
 
     if isinstance(value, sp.MatrixBase) and kind in EQUATION_LISTS:
         value = list(value)  # a column of equations: the checkers take its rows
@@ -374,6 +375,7 @@ def refusal(value: object, kind: str) -> str | None:
                 return (f"{name} is not differentiable everywhere, and a {kind.capitalize()} is differentiated "
                         f"to give the equations of motion; write it for the case at hand, without {name}")
     try:
+        check_numbers(value)
         check_expansion(value)
     except RebuildError as exc:
         return str(exc)

@@ -146,7 +146,9 @@ def canvas_names(name: str) -> list[CanvasName]:
     ends in ``_<digits>`` makes a later split possible as well, so each one is returned."""
     out: list[CanvasName] = []
     if m := _CANVAS_ANON.match(name):
-        out.append(CanvasName("anon_" + m["anon"].lower(), "", "", bool(m["late1"] or m["late2"]), m["file"]))
+        # the anonymous id keeps its case: Canvas's ids are case-sensitive, and two that differ only in
+        # case are two students
+        out.append(CanvasName("anon_" + m["anon"], "", "", bool(m["late1"] or m["late2"]), m["file"]))
     for i, ch in enumerate(name):
         if ch == "_" and i > 0 and (m := _CANVAS_TAIL.match(name, i)):
             who = name[:i]
@@ -346,9 +348,13 @@ def import_downloads(source: Path, ids: list[str], dest: Path, roster: dict[str,
                     student = _student_folder(f"{first.name}_{first.uid}")
                 else:
                     student = _student_folder(key)
-                if student in taken and taken[student] != key:
+                # folders that differ only in case are one folder on a case-insensitive disk (macOS)
+                if student.casefold() in taken and taken[student.casefold()] != key:
                     student = _student_folder(f"{student}_{key}")
-                taken[student] = key
+                base, n = student, 2
+                while student.casefold() in taken and taken[student.casefold()] != key:
+                    student, n = f"{base}_{n}", n + 1
+                taken[student.casefold()] = key
                 late = any(p.late for _, p in entries)
                 report.lms[student] = {"canvas_user_id": first.uid, "name": first.name, "late": late}
                 if first.key.startswith("anon_"):

@@ -9,6 +9,7 @@ from rich.console import Console, Group
 from rich.table import Table
 
 from lagrade.uses.bulk.gradebook import Gradebook
+from lagrade.verdicts.printable import plain
 
 BARS = " ▁▂▃▄▅▆▇█"
 
@@ -100,26 +101,28 @@ def failure_counts(book: Gradebook) -> Counter:
 
 
 def render_summary(book: Gradebook, console: Console) -> None:
+    """The summary for a terminal: the feedback quotes students, so every cell is printable and plain text."""
     stats = problem_stats(book)
-    t = Table(title=f"{book.assignment.name}: {len(book.students)} students", title_justify="left")
+    t = Table(title=plain(f"{book.assignment.name}: {len(book.students)} students"), title_justify="left")
     for col in ("problem", "handed in", "failed", "mean", "distribution 0 → full", "parts correct"):
         t.add_column(col)
     for st in stats:
         peak = max(st.histogram) or 1
         spark = "".join(BARS[round(8 * c / peak)] for c in st.histogram)
         parts = " ".join(f"{k} {100 * v:.0f}%" for k, v in st.part_success.items())
-        t.add_row(st.problem, str(st.submitted), str(st.failed), f"{st.mean:.2f}/{st.possible:g}", spark, parts)
+        t.add_row(plain(st.problem), str(st.submitted), str(st.failed), f"{st.mean:.2f}/{st.possible:g}", spark,
+                  plain(parts))
     totals = [s.points for s in book.students]
     mean = sum(totals) / len(totals) if totals else 0.0
     m = Table(title="Most common mistakes", title_justify="left")
     for col in ("problem", "part", "feedback", "count"):
         m.add_column(col, overflow="fold")
     for pid, part, feedback, count in common_mistakes(book, 6):
-        m.add_row(pid, part, feedback, str(count))
+        m.add_row(plain(pid), plain(part), plain(feedback), str(count))
     fails = failure_counts(book)
     lines = [t, f"class mean {mean:.2f} / {book.possible:g}"]
     if fails:
-        lines.append("files that could not be graded: " + ", ".join(f"{k} {v}" for k, v in fails.most_common()))
+        lines.append(plain("files that could not be graded: " + ", ".join(f"{k} {v}" for k, v in fails.most_common())))
     if book.skipped:
         lines.append(f"{len(book.skipped)} files skipped (see 'lagrade export --format skipped' or the report)")
     lines.append(m)
