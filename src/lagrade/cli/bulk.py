@@ -555,7 +555,7 @@ def prairielearn_grade(root: Path) -> None:
                    "image on Docker Hub (YOURACCOUNT/lagrade-grader:TAG), ghcr.io, quay.io, registry.gitlab.com or "
                    "public.ecr.aws, the registries PrairieLearn pulls from.")
 @click.option("--output", "-o", type=click.Path(file_okay=False, path_type=Path), default="prairielearn",
-              show_default=True, help="The folder to write (docker build it; copy questions/ into the course).")
+              show_default=True, help="The folder to write (docker build its image/; copy questions/ into the course).")
 @click.option("--problem", default=None, help="The problem of the example question (default: 12.43, or with an "
                                                "ASSIGNMENT one question per problem of it).")
 @click.option("--uuid-seed",
@@ -566,9 +566,12 @@ def prairielearn_grade(root: Path) -> None:
 @problems_option
 def prairielearn_build(assignment: Path | None, image: str, output: Path, problem: str | None, uuid_seed: str | None,
                        wheel: Path | None, problems_dir: tuple[Path, ...]) -> None:
-    """Write the grader's Dockerfile, the lagrade wheels, the entry script and an example question (with an
-    ASSIGNMENT file, like `gradescope build hw7.toml`: a question for each of its problems)."""
-    from lagrade.uses.deploy.prairielearn import BuildError, build_grader, write_question
+    """Write the grader image's build folder (OUTPUT/image: Dockerfile, the lagrade engine wheel, the entry
+    script; public, so no problem and no reference) and an example question whose private tests/ folder
+    holds its problem file (with an ASSIGNMENT file, like `gradescope build hw7.toml`: a question for
+    each of its problems)."""
+    from lagrade.uses.deploy.keycheck import KeyInPublic
+    from lagrade.uses.deploy.prairielearn import IMAGE_DIR, BuildError, build_grader, write_question
     from lagrade.uses.deploy.wheel import DeployError
     from lagrade.problem.spec import SpecError
 
@@ -578,9 +581,9 @@ def prairielearn_build(assignment: Path | None, image: str, output: Path, proble
         names = build_grader(output, pids[0], problems_dir, wheel, image=image, uuid_seed=uuid_seed)
         for pid in pids[1:]:  # the grader is the same for every question: only the questions differ
             names += write_question(output, pid, problems_dir, image=image, uuid_seed=uuid_seed)
-    except (SpecError, BuildError) as exc:
+    except (SpecError, BuildError, KeyInPublic) as exc:
         raise click.UsageError(str(exc)) from None
     except DeployError as exc:
         raise click.ClickException(str(exc)) from None
     click.echo(f"{output}: {', '.join(names)}")
-    click.echo(f"next: docker buildx build --platform linux/amd64 -t {image} --push {output}")
+    click.echo(f"next: docker buildx build --platform linux/amd64 -t {image} --push {output / IMAGE_DIR}")
