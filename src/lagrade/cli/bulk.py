@@ -417,7 +417,8 @@ _RUN_OPTIONS = [
                  default="/autograder/source/assignment.toml", show_default=True),
     click.option("--results", type=click.Path(dir_okay=False, path_type=Path),
                  default="/autograder/results/results.json", show_default=True),
-    click.option("--workers", "-j", type=click.IntRange(min=1), help="Grader processes (default: all cores)."),
+    click.option("--workers", "-j", type=click.IntRange(min=1),
+                 help="Grader processes (default: as many as the container's memory holds, one per core at most)."),
     problems_option,
 ]
 
@@ -479,6 +480,7 @@ GRADESCOPE_MEMORY_MB = 384
 def _gradescope_run(submission: Path, assignment_path: Path, results: Path, workers: int | None,
                     problems_dir: tuple[Path, ...]) -> None:
     import json
+    import os
     import time
 
     from lagrade.uses.bulk.exports import gradescope_results
@@ -515,6 +517,13 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
         else:
             notes.append(f"no submission folder {submission}")
         db = work / "grades.sqlite"
+        if workers is None:  # as many answers at once as the container's memory holds, not its cores
+            from lagrade.uses.deploy.pool import memory_limit, pool_size
+
+            limit = memory_limit()
+            workers = pool_size(len(list(folder.iterdir())), a.limits.memory_mb, limit, os.cpu_count())
+            click.echo(f"{workers} grader(s) at once: {a.limits.memory_mb} MB an answer in "
+                       f"{f'{limit >> 20} MiB' if limit else 'unknown memory'}")
         grade_folder(work / "class", a, db, workers=workers, problems_dirs=problems_dir)
         book = load_gradebook(db)
         out = gradescope_results(book, book.student("submission"), execution_time=time.monotonic() - t0,
