@@ -206,3 +206,68 @@ def test_lagrade_data_names_the_data_root(tmp_path, monkeypatch):
     assert library.problem_ids() == ["only.here"] and library.load_problem("only.here").id == "only.here"
     monkeypatch.delenv("LAGRADE_DATA")
     assert library.data_root() == REPO and "12.43" in library.problem_ids()
+
+
+@pytest.fixture
+def refused(tmp_path, monkeypatch):
+    """The platform's jail check refusing because the installed references are readable by the answer's
+    uid: the reason names where they are installed."""
+    from lagrade.answer.jail import kernel
+    from lagrade.uses.deploy import jailcheck
+
+    import shutil
+    import tempfile
+
+    top = Path(tempfile.mkdtemp(prefix="lagrade-install-"))  # under /tmp: nothing above it is private
+    where = top / "usr" / "local" / "lib" / "python3.11" / "site-packages" / "lagrade_chapter12"
+    (where / "reference_solutions").mkdir(parents=True)
+    for d in [where / "reference_solutions", *where.parents][:7]:
+        d.chmod(0o755)
+    monkeypatch.setattr(jailcheck.os, "geteuid", lambda: 0)
+    monkeypatch.setattr(kernel, "in_user_namespace", lambda: False)
+    monkeypatch.setattr(jailcheck, "key_paths", lambda extra=(): [where / "reference_solutions"])
+    verdict = jailcheck.decide(layers=(["uid", "no_new_privs", "limits", "seccomp"], {}, None))
+    monkeypatch.setattr(jailcheck, "decide", lambda *a, **k: verdict)
+    yield verdict, where
+    shutil.rmtree(top, ignore_errors=True)
+
+
+def test_a_refusal_names_no_install_path_to_students(refused, tmp_path, monkeypatch):
+    """PrairieLearn's format_errors and Gradescope's output are a student's to read: they say why
+    nothing was graded without the grader's paths; the instructor's log and extra_data keep them."""
+    from lagrade.cli.bulk import gradescope
+    from lagrade.uses.deploy.prairielearn import grade_job
+
+    verdict, where = refused
+    assert str(where) in verdict.lacking and "readable by other users" in verdict.lacking
+    shown = verdict.for_students()
+    assert "site-packages" not in shown and "/usr/" not in shown and "readable by other users" in shown
+
+    root = tmp_path / "grade"
+    (root / "data").mkdir(parents=True)
+    (root / "data" / "data.json").write_text(json.dumps({"params": {"lagrade": {"problem": "12.43"}}}))
+    (root / "student").mkdir()
+    (root / "student" / "answer.py").write_text("H = 1\n")
+    (root / "tests" / "problems").mkdir(parents=True)
+    (root / "tests" / "problems" / "12.43.toml").write_bytes((REPO / "problems" / "12.43.toml").read_bytes())
+    r = grade_job(root)
+    assert r["gradable"] is False and "refused to run students' files" in r["format_errors"][0]
+    assert "site-packages" not in json.dumps(r) and str(root) not in json.dumps(r)
+
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "12.43.py").write_text("H = 1\n")
+    (tmp_path / "hw.toml").write_text('name = "hw"\n[[problems]]\nid = "12.43"\n')
+    res = CliRunner().invoke(gradescope, ["run", "--submission", str(tmp_path / "sub"), "--assignment",
+                                          str(tmp_path / "hw.toml"), "--results", str(tmp_path / "results.json")])
+    out = json.loads((tmp_path / "results.json").read_text())
+    assert res.exit_code == 2 and "NOT graded" in out["output"] and "site-packages" not in out["output"], out
+    assert str(where) in out["extra_data"]["jail"]["refused"]  # the instructor's, not shown to students
+
+
+def test_without_paths_keeps_the_words():
+    from lagrade.uses.deploy.jailcheck import without_paths
+
+    assert without_paths("the sandbox could not start ([Errno 2] No such file: '/opt/py/bin/python3')") == \
+        "the sandbox could not start ([Errno 2] No such file: 'a path of the grader's')"
+    assert without_paths("mount or landlock, and no_new_privs/limits; 12.43 at 0.5 m/s") == \
+        "mount or landlock, and no_new_privs/limits; 12.43 at 0.5 m/s"

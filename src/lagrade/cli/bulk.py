@@ -498,7 +498,7 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
     jail = decide(extra_keys=(source,) if any(source.glob("*.whl")) else ())
     if not jail.ok:  # a clear result, never a grade made without the jail
         out = {"score": 0.0, "output": "This submission was NOT graded: the autograder refused to run students' files "
-               f"in this container ({jail.lacking}). Your instructor will grade it; please tell them.",
+               f"in this container ({jail.for_students()}). Your instructor will grade it; please tell them.",
                "output_format": "text", "visibility": "visible", "stdout_visibility": "hidden", "tests": [],
                "extra_data": {"jail": jail.as_dict()}}
         results.parent.mkdir(parents=True, exist_ok=True)

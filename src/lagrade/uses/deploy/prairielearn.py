@@ -22,6 +22,7 @@ import hashlib
 import json
 import os
 import re
+import sys
 import tempfile
 import time
 import uuid
@@ -147,7 +148,7 @@ def _grade_job(root: Path) -> dict:
     from lagrade.verdicts.grade import check
     from lagrade.problem.spec import SpecError
 
-    from lagrade.uses.deploy.jailcheck import decide
+    from lagrade.uses.deploy.jailcheck import decide, without_paths
 
     t0 = time.monotonic()
     job = read_job(root)
@@ -156,13 +157,15 @@ def _grade_job(root: Path) -> dict:
     params, path = job
     jail = decide()
     if not jail.ok:  # not gradable: PrairieLearn does not count the attempt, and the reason is said
-        return _not_gradable([f"the grader refused to run students' files in this container: {jail.lacking}"],
+        print(f"lagrade: refusing to run students' files: {jail.lacking}", file=sys.stderr)  # the staff's job log
+        return _not_gradable([f"the grader refused to run students' files in this container: {jail.for_students()}"],
                              "This submission was not graded: the grader's sandbox is incomplete here; "
                              "please tell your instructor.")
     try:
         result = check(params.problem, path, accuracy=params.accuracy)
     except SpecError as exc:
-        return _not_gradable([f"the question is set up wrongly: {exc}"],
+        print(f"lagrade: the question is set up wrongly: {exc}", file=sys.stderr)
+        return _not_gradable([f"the question is set up wrongly: {without_paths(str(exc))}"],
                              "This question's grader is misconfigured; please tell your instructor.")
     if result.parts and all(p.verdict == "invalid" for p in result.parts) and result.problems:
         return _not_gradable(list(result.problems), "Your file could not be graded; fix it and submit again.\n"
