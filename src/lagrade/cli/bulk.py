@@ -470,6 +470,8 @@ def gradescope_build(assignment_path: Path, output: Path, wheel: Path | None, pr
     except DeployError as exc:
         raise click.ClickException(str(exc)) from None
     click.echo(f"{output}: {', '.join(names)}")
+    click.echo(f"private: {output.name} holds the problems and reference solutions; upload it to Gradescope as the "
+               "autograder and keep it out of anything public (docs/deploy.md)")
 
 
 #: the answer's memory bound on Gradescope when the assignment's [limits] gives none: below the

@@ -4,7 +4,8 @@ Gradescope's and PrairieLearn's containers may refuse new namespaces and Landloc
 seccomp profile does both), so the jail has no file view of its own there. What they do give: the
 grader runs as root and each answer as another uid (the jail's ``uid`` layer). That layer hides the
 key by itself when the problem files, the reference solutions and the reference cache are readable
-by the grader's uid only: ``setup.sh`` and the Dockerfile install them so (0700), and this module
+by the grader's uid only: ``setup.sh`` installs them so (0700) on Gradescope, ``lagrade prairielearn
+grade`` makes the job's ``/grade/tests`` so (PrairieLearn's image holds no key), and this module
 checks it before anything is graded. Nothing of the jail itself is changed here: the layers are the
 zygote's, and the minimum is :func:`lagrade.answer.jail.kernel.missing_minimum`, with "mount or landlock"
 also met by "uid, and every key path private".
