@@ -373,7 +373,8 @@ def build_grader(output: Path, problem_id: str = "12.43", problems_dirs: tuple[P
     context = output / IMAGE_DIR
     context.mkdir(parents=True, exist_ok=True)
     for old in _old_layout(output):
-        old.unlink()
+        if wheel is None or old.resolve() != wheel.resolve():  # the wheel given may be one it left
+            old.unlink()
     with tempfile.TemporaryDirectory(prefix="lagrade-pl-build-") as tmp:
         engine = wheel if wheel is not None else build_wheel(Path(tmp) / "wheel")
         for old in context.glob("lagrade-*.whl"):
