@@ -4,7 +4,8 @@ restrictions (no new namespaces, no Landlock), emulated here with a seccomp filt
 
 There the only file-view layer left is "grader root, answer another uid": both commands grade only
 when the key (problem files, references, cache) is readable by the grader's uid alone, write the
-layers into the result, and refuse with a clear result otherwise. The answer files attack with the
+layers into the result, and refuse with a clear result otherwise. On PrairieLearn the key is the
+job's /grade/tests (the image holds none), which the grader makes private itself. The answer files attack with the
 Python-level tripwires off (tests/security/tripwires_off), so the OS layers alone decide."""
 
 from __future__ import annotations
@@ -70,12 +71,20 @@ def _gradescope(tmp: Path, answer: str, pythonpath: list[Path], dockerlike: bool
 
 
 def _prairielearn(tmp: Path, answer: str, pythonpath: list[Path]) -> dict:
-    (tmp / "grade" / "data").mkdir(parents=True, exist_ok=True)
-    (tmp / "grade" / "student").mkdir(exist_ok=True)
-    (tmp / "grade" / "data" / "data.json").write_text(json.dumps({"params": {"lagrade": {"problem": "12.43"}}}))
-    (tmp / "grade" / "student" / "answer.py").write_text(answer)
-    _run(tmp, ["prairielearn", "grade", "--root", str(tmp / "grade")], pythonpath)
-    return json.loads((tmp / "grade" / "results" / "results.json").read_text())
+    """A PrairieLearn job as PrairieLearn hands it over: the question's tests/ (the problem file)
+    readable by all, under a folder others may enter; the grader must make it private itself."""
+    grade = tmp / "grade"
+    (grade / "data").mkdir(parents=True, exist_ok=True)
+    (grade / "student").mkdir(exist_ok=True)
+    (grade / "tests" / "problems").mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(REPO / "problems" / "12.43.toml", grade / "tests" / "problems" / "12.43.toml")
+    for d in (tmp, grade, grade / "tests", grade / "tests" / "problems"):
+        d.chmod(0o755)
+    (grade / "tests" / "problems" / "12.43.toml").chmod(0o644)
+    (grade / "data" / "data.json").write_text(json.dumps({"params": {"lagrade": {"problem": "12.43"}}}))
+    (grade / "student" / "answer.py").write_text(answer)
+    _run(tmp, ["prairielearn", "grade", "--root", str(grade)], pythonpath)
+    return json.loads((grade / "results" / "results.json").read_text())
 
 
 @pytest.fixture(scope="module")
@@ -106,10 +115,23 @@ def test_gradescope_refuses_where_the_answer_could_read_the_key(tmp_path):
 
 
 @needs_root
-def test_prairielearn_refuses_where_the_answer_could_read_the_key(tmp_path):
-    out = _prairielearn(tmp_path, _steal(REPO / "reference_solutions/12.43/answer.py"), [REPO / "src"])
-    assert out["gradable"] is False and out["score"] == 0, out
-    assert "refused to run students' files" in out["format_errors"][0]
+def test_prairielearn_hides_the_problem_it_is_handed_before_an_answer_runs():
+    """The image holds no key; the job's /grade/tests does, readable by all as handed over. The grader
+    makes it root's alone first: an answer that reads it fails (Permission denied), an honest one passes."""
+    top = Path(tempfile.mkdtemp(prefix="lagrade-pljob-"))
+    top.chmod(0o755)  # nothing above the job is private: only the grader's own step can hide it
+    try:
+        problem = top / "a" / "grade" / "tests" / "problems" / "12.43.toml"
+        honest = (REPO / "reference_solutions/12.43/answer.py").read_text()
+        peek = f"from lagrade.answer import *\nopen({str(problem)!r}).read()\n" + honest
+        pl = _prairielearn(top / "a", peek, [REPO / "src"])
+        assert pl["score"] == 0 and "key hidden by uid + private files" in pl["message"], pl
+        assert "Permission denied" in " ".join(pl["format_errors"])
+        assert problem.stat().st_mode & 0o077 == 0 and problem.stat().st_uid == 0
+        pl = _prairielearn(top / "b", honest, [REPO / "src"])
+        assert pl["gradable"] and pl["score"] == 1, pl
+    finally:
+        shutil.rmtree(top, ignore_errors=True)
 
 
 @needs_root
@@ -122,11 +144,6 @@ def test_the_uid_layer_with_private_key_files_is_enough(private_checkout, tmp_pa
     assert jail["file_view"] == "uid + private files" and jail["refused"] is None and "mount" not in jail["active"]
     code, out = _gradescope(tmp_path, _steal(co / "reference_solutions/12.43/answer.py"), [co / "src"])
     assert code == 0 and out["score"] == 0, out  # the kernel refused the read: no marks
-    pl = _prairielearn(tmp_path, _steal(co / "reference_solutions/12.43/answer.py"), [co / "src"])
-    assert pl["score"] == 0 and "key hidden by uid + private files" in pl["message"], pl
-    assert "Permission denied" in " ".join(pl["format_errors"])
-    pl = _prairielearn(tmp_path, honest, [co / "src"])
-    assert pl["gradable"] and pl["score"] == 1, pl
 
 
 @needs_root

@@ -64,6 +64,7 @@ def autograder(tmp_path_factory) -> Path:
     out = tmp / "autograder.zip"
     res = CliRunner().invoke(gradescope, ["build", str(tmp / "hw7.toml"), "-o", str(out)])
     assert res.exit_code == 0, res.output
+    assert "private: autograder.zip holds the problems" in res.output  # it is the key: never public
     return out
 
 

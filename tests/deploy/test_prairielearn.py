@@ -1,5 +1,7 @@
-"""The PrairieLearn external grader: the build folder, the example question, the entry point on a
-fake /grade tree (right, wrong, broken, hostile, misconfigured), every file checked against a schema."""
+"""The PrairieLearn external grader: the build folder (a public image's context holding the engine
+alone), the example question (its problem file in its private tests/), the entry point on a fake
+/grade tree laid out as PrairieLearn lays it out (right, wrong, broken, hostile, misconfigured),
+every file checked against a schema."""
 
 from __future__ import annotations
 
@@ -11,6 +13,7 @@ import uuid
 import runpy
 import subprocess
 import sys
+import zipfile
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -41,10 +44,17 @@ def _question(built: Path) -> Path:
     return built / "questions" / "lagrade-12.43"
 
 
-def job(built: Path, root: Path, files: dict[str, bytes], params: dict | None = None) -> Path:
-    """A /grade tree as PrairieLearn makes it: data.json from the example question's server.py."""
+def job(built: Path, root: Path, files: dict[str, bytes], params: dict | None = None,
+        question: Path | None = None) -> Path:
+    """A /grade tree as PrairieLearn makes it: data.json from the question's server.py, the question's
+    tests/ folder copied to tests/ (the example question's unless ``question`` is given)."""
+    import shutil
+
+    question = question or _question(built)
     data = {"params": {}, "correct_answers": {}, "submitted_answers": {}}
-    runpy.run_path(str(_question(built) / "server.py"))["generate"](data)
+    runpy.run_path(str(question / "server.py"))["generate"](data)
+    if (question / "tests").is_dir():
+        shutil.copytree(question / "tests", root / "tests")
     if params is not None:
         data["params"]["lagrade"] = params
     (root / "data").mkdir(parents=True)
@@ -59,7 +69,7 @@ def grade(built: Path, root: Path) -> dict:
     """Run the image's entry script (with this Python on PATH in place of the image's)."""
     env = {**os.environ, "LAGRADE_GRADE_ROOT": str(root),
            "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}"}
-    proc = subprocess.run(["sh", str(built / "lagrade-pl-grade")], env=env, capture_output=True, text=True,
+    proc = subprocess.run(["sh", str(built / "image" / "lagrade-pl-grade")], env=env, capture_output=True, text=True,
                           timeout=600)
     assert proc.returncode == 0, proc.stderr
     results = json.loads((root / "results" / "results.json").read_text())
@@ -71,11 +81,20 @@ def test_the_build_folder_and_the_question(built):
     info = json.loads((_question(built) / "info.json").read_text())
     jsonschema.validate(info, INFO_SCHEMA)
     assert info["gradingMethod"] == "External"
-    docker = (built / "Dockerfile").read_text()
-    wheel, data_wheel = next(built.glob("lagrade-*.whl")).name, next(built.glob("lagrade_chapter12-*.whl")).name
-    assert f"COPY {wheel} {data_wheel} /tmp/" in docker and f"/tmp/{data_wheel} &&" in docker and f"COPY lagrade-pl-grade {info['externalGradingOptions']['entrypoint']}" in docker
-    # the key is the grader's uid's alone in the image: problem data and cache 0700 after the cache is built
-    assert docker.index("cache build") < docker.index("chmod 0700 \"$d\"") and "data_root()" in docker
+    docker = (built / "image" / "Dockerfile").read_text()
+    (wheel,) = [p.name for p in (built / "image").glob("*.whl")]
+    assert wheel.startswith("lagrade-") and f"COPY {wheel} /tmp/" in docker
+    assert f"COPY lagrade-pl-grade {info['externalGradingOptions']['entrypoint']}" in docker
+    # the image is public: the engine alone (it used to install the problem data and build the reference
+    # cache, then chmod them 0700, which protects a running container but not anyone who pulls the image)
+    from lagrade.uses.deploy.keycheck import find_keys
+
+    assert find_keys(built / "image") == [] and "chapter12" not in docker and "cache build" not in docker
+    assert not list(built.rglob("lagrade_chapter12-*.whl"))
+    with zipfile.ZipFile(built / "image" / wheel) as z:  # the real engine wheel: no problem, no reference
+        assert not [n for n in z.namelist() if n.endswith(".toml") or "reference_solutions" in n]
+    assert (_question(built) / "tests" / "problems" / "12.43.toml").read_bytes() == \
+        (REPO / "problems" / "12.43.toml").read_bytes()
     data = {"params": {}}
     runpy.run_path(str(_question(built) / "server.py"))["generate"](data)
     assert data["params"]["lagrade"]["problem"] == "12.43"
@@ -112,8 +131,8 @@ def test_info_json_names_the_pushed_image_and_nothing_deprecated(built):
     assert info["externalGradingOptions"]["image"] == IMAGE
     assert _deprecated(info, INFO_SCHEMA) == []
     assert _deprecated({"externalGradingOptions": {"enabled": True}}, INFO_SCHEMA) == ["externalGradingOptions.enabled"]
-    assert f"-t {IMAGE} --push" in (built / "Dockerfile").read_text() and "--platform linux/amd64" in \
-        (built / "Dockerfile").read_text()
+    assert f"-t {IMAGE} --push" in (built / "image" / "Dockerfile").read_text() and "--platform linux/amd64" in \
+        (built / "image" / "Dockerfile").read_text()
 
 
 @pytest.mark.parametrize("image", ["lagrade-prairielearn:latest", "lagrade-prairielearn", "myhost.edu:5000/me/grader",
@@ -261,3 +280,31 @@ def test_a_hostile_file_is_contained(built, tmp_path):
 def test_what_cannot_be_graded_is_said(built, tmp_path, files, params, says):
     r = grade(built, job(built, tmp_path / "grade", files, params))
     assert r["gradable"] is False and says in " ".join(r["format_errors"])
+
+
+def test_the_grader_reads_the_problem_from_grade_tests(tmp_path):
+    """The image knows no problem: the grader reads the question's tests/ (at /grade/tests), makes it
+    private before any answer runs, and says so when it is missing. A problem of the instructor's own,
+    present nowhere else, is graded from there."""
+    extra = tmp_path / "mine"
+    extra.mkdir()
+    text = (REPO / "problems/12.43.toml").read_text().replace('id = "12.43"', 'id = "hw7.1"', 1)
+    (extra / "hw7.1.toml").write_text(text)
+    out = tmp_path / "pl"
+    res = CliRunner().invoke(prairielearn, ["build", "-o", str(out), "--problem", "hw7.1", "--problems", str(extra),
+                                            "--image", IMAGE])
+    assert res.exit_code == 0, res.output
+    question = out / "questions" / "lagrade-hw7.1"
+    root = job(out, tmp_path / "grade", {"answer.py": (REPO / "reference_solutions/12.43/answer.py").read_bytes()},
+               question=question)
+    (root / "tests").chmod(0o755)
+    r = grade(out, root)
+    assert r["gradable"] and r["score"] == 1, r
+    for made_private in (root / "tests", root / "tests" / "problems" / "hw7.1.toml"):
+        assert os.stat(made_private).st_mode & 0o077 == 0
+    import shutil
+
+    shutil.rmtree(root / "tests")
+    (root / "results" / "results.json").unlink()
+    r = grade(out, root)
+    assert r["gradable"] is False and "tests/" in r["format_errors"][0], r

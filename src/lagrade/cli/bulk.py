@@ -427,7 +427,8 @@ _RUN_OPTIONS = [
                  default="/autograder/source/assignment.toml", show_default=True),
     click.option("--results", type=click.Path(dir_okay=False, path_type=Path),
                  default="/autograder/results/results.json", show_default=True),
-    click.option("--workers", "-j", type=click.IntRange(min=1), help="Grader processes (default: all cores)."),
+    click.option("--workers", "-j", type=click.IntRange(min=1),
+                 help="Grader processes (default: as many as the container's memory holds, one per core at most)."),
     problems_option,
 ]
 
@@ -479,6 +480,8 @@ def gradescope_build(assignment_path: Path, output: Path, wheel: Path | None, pr
     except DeployError as exc:
         raise click.ClickException(str(exc)) from None
     click.echo(f"{output}: {', '.join(names)}")
+    click.echo(f"private: {output.name} holds the problems and reference solutions; upload it to Gradescope as the "
+               "autograder and keep it out of anything public (docs/deploy.md)")
 
 
 #: the answer's memory bound on Gradescope when the assignment's [limits] gives none: below the
@@ -489,6 +492,7 @@ GRADESCOPE_MEMORY_MB = 384
 def _gradescope_run(submission: Path, assignment_path: Path, results: Path, workers: int | None,
                     problems_dir: tuple[Path, ...]) -> None:
     import json
+    import os
     import time
 
     from lagrade.uses.bulk.exports import gradescope_results
@@ -506,7 +510,7 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
     jail = decide(extra_keys=(source,) if any(source.glob("*.whl")) else ())
     if not jail.ok:  # a clear result, never a grade made without the jail
         out = {"score": 0.0, "output": "This submission was NOT graded: the autograder refused to run students' files "
-               f"in this container ({jail.lacking}). Your instructor will grade it; please tell them.",
+               f"in this container ({jail.for_students()}). Your instructor will grade it; please tell them.",
                "output_format": "text", "visibility": "visible", "stdout_visibility": "hidden", "tests": [],
                "extra_data": {"jail": jail.as_dict()}}
         results.parent.mkdir(parents=True, exist_ok=True)
@@ -525,6 +529,13 @@ def _gradescope_run(submission: Path, assignment_path: Path, results: Path, work
         else:
             notes.append(f"no submission folder {submission}")
         db = work / "grades.sqlite"
+        if workers is None:  # as many answers at once as the container's memory holds, not its cores
+            from lagrade.uses.deploy.pool import memory_limit, pool_size
+
+            limit = memory_limit()
+            workers = pool_size(len(list(folder.iterdir())), a.limits.memory_mb, limit, os.cpu_count())
+            click.echo(f"{workers} grader(s) at once: {a.limits.memory_mb} MB an answer in "
+                       f"{f'{limit >> 20} MiB' if limit else 'unknown memory'}")
         grade_folder(work / "class", a, db, workers=workers, problems_dirs=problems_dir)
         book = load_gradebook(db)
         out = gradescope_results(book, book.student("submission"), execution_time=time.monotonic() - t0,
@@ -565,7 +576,7 @@ def prairielearn_grade(root: Path) -> None:
                    "image on Docker Hub (YOURACCOUNT/lagrade-grader:TAG), ghcr.io, quay.io, registry.gitlab.com or "
                    "public.ecr.aws, the registries PrairieLearn pulls from.")
 @click.option("--output", "-o", type=click.Path(file_okay=False, path_type=Path), default="prairielearn",
-              show_default=True, help="The folder to write (docker build it; copy questions/ into the course).")
+              show_default=True, help="The folder to write (docker build its image/; copy questions/ into the course).")
 @click.option("--problem", default=None, help="The problem of the example question (default: 12.43, or with an "
                                                "ASSIGNMENT one question per problem of it).")
 @click.option("--uuid-seed",
@@ -576,9 +587,12 @@ def prairielearn_grade(root: Path) -> None:
 @problems_option
 def prairielearn_build(assignment: Path | None, image: str, output: Path, problem: str | None, uuid_seed: str | None,
                        wheel: Path | None, problems_dir: tuple[Path, ...]) -> None:
-    """Write the grader's Dockerfile, the lagrade wheels, the entry script and an example question (with an
-    ASSIGNMENT file, like `gradescope build hw7.toml`: a question for each of its problems)."""
-    from lagrade.uses.deploy.prairielearn import BuildError, build_grader, write_question
+    """Write the grader image's build folder (OUTPUT/image: Dockerfile, the lagrade engine wheel, the entry
+    script; public, so no problem and no reference) and an example question whose private tests/ folder
+    holds its problem file (with an ASSIGNMENT file, like `gradescope build hw7.toml`: a question for
+    each of its problems)."""
+    from lagrade.uses.deploy.keycheck import KeyInPublic
+    from lagrade.uses.deploy.prairielearn import IMAGE_DIR, BuildError, build_grader, write_question
     from lagrade.uses.deploy.wheel import DeployError
     from lagrade.problem.spec import SpecError
 
@@ -588,9 +602,9 @@ def prairielearn_build(assignment: Path | None, image: str, output: Path, proble
         names = build_grader(output, pids[0], problems_dir, wheel, image=image, uuid_seed=uuid_seed)
         for pid in pids[1:]:  # the grader is the same for every question: only the questions differ
             names += write_question(output, pid, problems_dir, image=image, uuid_seed=uuid_seed)
-    except (SpecError, BuildError) as exc:
+    except (SpecError, BuildError, KeyInPublic) as exc:
         raise click.UsageError(str(exc)) from None
     except DeployError as exc:
         raise click.ClickException(str(exc)) from None
     click.echo(f"{output}: {', '.join(names)}")
-    click.echo(f"next: docker buildx build --platform linux/amd64 -t {image} --push {output}")
+    click.echo(f"next: docker buildx build --platform linux/amd64 -t {image} --push {output / IMAGE_DIR}")

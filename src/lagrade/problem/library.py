@@ -5,7 +5,9 @@ Problems are data: the chapter's ship apart from the engine, in the ``lagrade-ch
 distribution (``chapter12/`` in the checkout), so that the ``lagrade`` wheel a student installs to
 check against a course server holds no problem and no reference. An editable install reads the
 checkout's folders in place; an instructor adds their own with ``--problems DIR`` or
-``LAGRADE_PROBLEMS`` without touching the engine.
+``LAGRADE_PROBLEMS`` without touching the engine. ``LAGRADE_DATA=DIR`` names the data root itself:
+a platform's grader image holds the engine alone, and its problems come from the platform's private
+course files (PrairieLearn's ``/grade/tests``, docs/deploy.md).
 """
 
 from __future__ import annotations
@@ -23,17 +25,26 @@ _PACKAGE = Path(__file__).resolve().parents[1]  # the lagrade package (this is l
 DATA_GROUP = "lagrade.problem_data"
 #: where nothing is: the reference folder of an install without problem data (a student's client)
 _NOWHERE = _PACKAGE / "_no_problem_data"
+#: a folder holding ``problems/`` (and ``reference_solutions/``) that is the data root, before any other
+DATA_ENV = "LAGRADE_DATA"
 
 
-@lru_cache(maxsize=1)
 def data_root() -> Path | None:
-    """The folder that holds the bundled ``problems/`` and ``reference_solutions/``: the source
-    checkout of an editable install, else the first installed ``lagrade.problem_data`` package (by
-    entry-point name), else None. Found without importing anything: a data package runs no code.
+    """The folder that holds the bundled ``problems/`` and ``reference_solutions/``: ``LAGRADE_DATA``
+    if set (a grader whose image holds no key: the platform hands the data in at grading time), else
+    the source checkout of an editable install, else the first installed ``lagrade.problem_data``
+    package (by entry-point name), else None. Found without importing anything: a data package runs
+    no code.
 
     One root, never several: the answer jail hides exactly ``reference_dir()`` and ``problem_dirs()``
     (:func:`lagrade.answer.jail.child.secret_dirs`), so a second root's references would be readable
     from site-packages. Other courses' problems come with ``--problems DIR``."""
+    setting = os.environ.get(DATA_ENV, "")
+    return Path(setting).expanduser().resolve() if setting else _installed_root()
+
+
+@lru_cache(maxsize=1)
+def _installed_root() -> Path | None:
     import importlib.util
     from importlib.metadata import entry_points
 
@@ -49,6 +60,9 @@ def data_root() -> Path | None:
             if (Path(place) / "problems").is_dir():
                 return Path(place).resolve()
     return None
+
+
+data_root.cache_clear = _installed_root.cache_clear  # type: ignore[attr-defined]  # what was cached
 
 
 def _bundled(name: str) -> Path:

@@ -4,7 +4,8 @@ Gradescope's and PrairieLearn's containers may refuse new namespaces and Landloc
 seccomp profile does both), so the jail has no file view of its own there. What they do give: the
 grader runs as root and each answer as another uid (the jail's ``uid`` layer). That layer hides the
 key by itself when the problem files, the reference solutions and the reference cache are readable
-by the grader's uid only: ``setup.sh`` and the Dockerfile install them so (0700), and this module
+by the grader's uid only: ``setup.sh`` installs them so (0700) on Gradescope, ``lagrade prairielearn
+grade`` makes the job's ``/grade/tests`` so (PrairieLearn's image holds no key), and this module
 checks it before anything is graded. Nothing of the jail itself is changed here: the layers are the
 zygote's, and the minimum is :func:`lagrade.answer.jail.kernel.missing_minimum`, with "mount or landlock"
 also met by "uid, and every key path private".
@@ -13,6 +14,7 @@ also met by "uid, and every key path private".
 from __future__ import annotations
 
 import os
+import re
 import stat
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -35,10 +37,25 @@ class JailVerdict:
         return {"active": self.active, "inactive": self.inactive, "file_view": self.file_view,
                 "refused": self.lacking}
 
+    def for_students(self) -> str | None:
+        """``lacking`` as a student is shown it: without the grader's paths (where lagrade and the
+        problem data are installed, the course's folders); the full reason goes to the instructor's
+        log and, on Gradescope, to ``extra_data``."""
+        return None if self.lacking is None else without_paths(self.lacking)
+
     def summary(self) -> str:
         """One line: the layers the answer ran under, and what hid the key."""
         return f"jail: {', '.join(self.active) or 'none'}" + (f"; key hidden by {self.file_view}" if self.file_view
                                                               else "")
+
+
+_PATH = re.compile(r"(?<![\w.~-])/[^\s'\"(),;:]+")
+
+
+def without_paths(text: str) -> str:
+    """``text`` with every absolute path replaced by "a path of the grader's": what a message shown to
+    students may say of the machine it was graded on."""
+    return _PATH.sub("a path of the grader's", text)
 
 
 def probe_layers() -> tuple[list[str], dict[str, str], str | None]:
@@ -109,7 +126,8 @@ def decide(extra_keys: tuple[Path, ...] = (), layers: tuple[list[str], dict[str,
     if open_keys:
         verdict.lacking = (f"{lacking}, and the answer's uid could read the key: {open_keys[0]}"
                            + (f" (and {len(open_keys) - 1} more)" if len(open_keys) > 1 else "")
-                           + "; install them 0700 as setup.sh and the Dockerfile do")
+                           + "; install them readable by the grader's uid alone (0700), as setup.sh and "
+                           "lagrade prairielearn grade do")
         return verdict
     verdict.file_view = "uid + private files"
     return verdict

@@ -1,9 +1,12 @@
-"""The PrairieLearn external grader: a Docker image from the lagrade and problem-data wheels, its
-entry point, a question.
+"""The PrairieLearn external grader: a public Docker image that holds the lagrade engine alone, its
+entry point, and one question per problem whose private ``tests/`` folder holds the problem file.
 
 PrairieLearn runs the image's entry point with the job in ``/grade``: ``data/data.json`` (the
 question's ``data``, whose ``params["lagrade"]`` the example ``server.py`` sets: the problem, the
-file name, the accuracy), ``student/`` (the submitted files); the entry point must leave
+file name, the accuracy), ``student/`` (the submitted files) and ``tests/`` (the question's
+``tests/`` folder, which PrairieLearn copies into the job and never serves to students: the
+problem file, i.e. the key, comes from there and never from the image, which anyone can pull);
+the entry point must leave
 ``results/results.json``: ``gradable``, ``score`` in [0, 1], ``message``, ``format_errors``,
 ``tests`` (one per part: ``name``, ``description``, ``points``, ``max_points``, ``message``,
 ``output``) and ``images`` (the student's motion against the true one, a PNG ``data:`` URL, for
@@ -17,7 +20,9 @@ from __future__ import annotations
 import base64
 import hashlib
 import json
+import os
 import re
+import sys
 import tempfile
 import time
 import uuid
@@ -29,6 +34,10 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 #: PrairieLearn's limit on results.json is 1 MB: a plot larger than this is left out (and said)
 MAX_IMAGE_BYTES = 600_000
 ENTRYPOINT = "/usr/local/bin/lagrade-pl-grade"
+#: the folders of the build's output: the image's build context (public), and the questions (private,
+#: the course repository); in a question, the folder PrairieLearn copies to ``/grade/tests``
+IMAGE_DIR = "image"
+TESTS_DIR = "tests"
 #: the answer file a question asks for: in the editor, and offered for download (clientFilesQuestion/)
 ANSWER_FILE = "answer.py"
 
@@ -91,13 +100,55 @@ def _image(result) -> list[dict]:
              "url": "data:image/png;base64," + base64.b64encode(data).decode()}]
 
 
+def hide_tree(folder: Path) -> None:
+    """Make ``folder`` and all below it the grader's own (root's, when the grader is root) and
+    unreadable to other uids: where the container gives the jail no file view of its own, the
+    answer's other uid is what keeps it from the problem files (:mod:`lagrade.uses.deploy.jailcheck`)."""
+    root = os.geteuid() == 0
+    for dirpath, dirnames, filenames in os.walk(folder):
+        for name in [None, *dirnames, *filenames]:
+            p = dirpath if name is None else os.path.join(dirpath, name)
+            try:
+                st = os.lstat(p)
+                if os.path.islink(p):
+                    continue
+                if root and (st.st_uid, st.st_gid) != (0, 0):
+                    os.lchown(p, 0, 0)
+                os.chmod(p, st.st_mode & 0o700)
+            except OSError:  # what stays readable, the jail check before grading finds and refuses
+                continue
+
+
 def grade_job(root: Path = Path("/grade")) -> dict:
-    """Grade the job in ``root`` and return PrairieLearn's results (see the module's docstring)."""
+    """Grade the job in ``root`` and return PrairieLearn's results (see the module's docstring).
+
+    The problem data are ``root/tests`` (the question's private ``tests/`` folder), made private to
+    the grader first, and used as the data root (``LAGRADE_DATA``) for this job alone."""
+    from lagrade.problem.library import DATA_ENV
+
+    data = root / TESTS_DIR
+    if not (data / "problems").is_dir():
+        return _not_gradable([f"the question is set up wrongly: its {TESTS_DIR}/ folder holds no problems/ "
+                              "(rebuild it with lagrade prairielearn build and copy the whole question folder)"],
+                             "This question's grader is misconfigured; please tell your instructor.")
+    hide_tree(data)
+    before = os.environ.get(DATA_ENV)
+    os.environ[DATA_ENV] = str(data.resolve())
+    try:
+        return _grade_job(root)
+    finally:
+        if before is None:
+            os.environ.pop(DATA_ENV, None)
+        else:
+            os.environ[DATA_ENV] = before
+
+
+def _grade_job(root: Path) -> dict:
     from lagrade.uses.bulk.exports import feedback_text, readable
     from lagrade.verdicts.grade import check
     from lagrade.problem.spec import SpecError
 
-    from lagrade.uses.deploy.jailcheck import decide
+    from lagrade.uses.deploy.jailcheck import decide, without_paths
 
     t0 = time.monotonic()
     job = read_job(root)
@@ -106,13 +157,15 @@ def grade_job(root: Path = Path("/grade")) -> dict:
     params, path = job
     jail = decide()
     if not jail.ok:  # not gradable: PrairieLearn does not count the attempt, and the reason is said
-        return _not_gradable([f"the grader refused to run students' files in this container: {jail.lacking}"],
+        print(f"lagrade: refusing to run students' files: {jail.lacking}", file=sys.stderr)  # the staff's job log
+        return _not_gradable([f"the grader refused to run students' files in this container: {jail.for_students()}"],
                              "This submission was not graded: the grader's sandbox is incomplete here; "
                              "please tell your instructor.")
     try:
         result = check(params.problem, path, accuracy=params.accuracy)
     except SpecError as exc:
-        return _not_gradable([f"the question is set up wrongly: {exc}"],
+        print(f"lagrade: the question is set up wrongly: {exc}", file=sys.stderr)
+        return _not_gradable([f"the question is set up wrongly: {without_paths(str(exc))}"],
                              "This question's grader is misconfigured; please tell your instructor.")
     if result.parts and all(p.verdict == "invalid" for p in result.parts) and result.problems:
         return _not_gradable(list(result.problems), "Your file could not be graded; fix it and submit again.\n"
@@ -169,26 +222,23 @@ def question_uuid(seed: str, problem_id: str) -> str:
     return str(uuid.UUID(bytes=digest[:16], version=4))
 
 
-DOCKERFILE = """# lagrade's PrairieLearn external grader. PrairieLearn runs linux/amd64 images pulled from a
-# public registry: build and push with
+DOCKERFILE = """# lagrade's PrairieLearn external grader: the lagrade engine alone. PrairieLearn pulls grader images
+# from a public registry, so this image holds no problem file, no reference solution and no reference
+# cache: each question's tests/ folder holds its problem file, and PrairieLearn copies it to
+# /grade/tests for each job and never serves it to students (lagrade prairielearn build refuses to put
+# a key into this folder). PrairieLearn runs linux/amd64 images: build and push with
 #   docker buildx build --platform linux/amd64 -t {image} --push .
 # (the question's info.json names this image in externalGradingOptions.image)
 FROM python:3.11-slim
-COPY {wheel} {data_wheel} /tmp/
-RUN pip install --no-cache-dir /tmp/{wheel} /tmp/{data_wheel} && rm /tmp/{wheel} /tmp/{data_wheel}
+COPY {wheel} /tmp/
+RUN pip install --no-cache-dir /tmp/{wheel} && rm /tmp/{wheel}
 COPY lagrade-pl-grade {entrypoint}
-RUN chmod 0755 {entrypoint} && (python -m lagrade cache build || true)
-# the key for the grader's uid (root) only: answers run as another uid, and where the container gives
-# no mount namespace and no Landlock that uid is what keeps them from the problem data, the references
-# and the cache (lagrade prairielearn grade checks it before grading)
-RUN for d in "$(python -c 'from lagrade.problem.library import data_root; print(data_root() or "")')" \
-             "$(python -c 'from lagrade.problem.library import cache_dir; print(cache_dir() or "")')"; do \
-      if [ -n "$d" ] && [ -e "$d" ]; then chmod -R go-rwx "$d" && chmod 0700 "$d"; fi; done
+RUN chmod 0755 {entrypoint}
 """
 
 ENTRY_SCRIPT = """#!/bin/sh
-# PrairieLearn runs this in the grading container: /grade/data/data.json, /grade/student/ in,
-# /grade/results/results.json out.
+# PrairieLearn runs this in the grading container: /grade/data/data.json, /grade/student/ and the
+# question's private files /grade/tests/ (the problem) in, /grade/results/results.json out.
 exec python -m lagrade prairielearn grade --root "${LAGRADE_GRADE_ROOT:-/grade}"
 """
 
@@ -233,15 +283,18 @@ def question_html(problem) -> str:
 
 
 def question_files(problem_id: str, problems_dirs: tuple[Path, ...] = (), *, image: str,
-                   uuid_seed: str | None = None, question_id: str | None = None) -> dict[str, str]:
-    """``info.json``, ``question.html``, ``server.py`` and ``clientFilesQuestion/answer.py`` (the
-    template) of a question graded by lagrade in ``image``. Its UUID: ``question_id`` if given, else
-    drawn from ``uuid_seed`` (:func:`question_uuid`), else a random UUID4."""
+                   uuid_seed: str | None = None, question_id: str | None = None) -> dict[str, bytes]:
+    """``info.json``, ``question.html``, ``server.py``, ``clientFilesQuestion/answer.py`` (the
+    template, served to students) and ``tests/problems/<id>.toml`` (the problem file, the key: private,
+    copied to ``/grade/tests`` for the grader) of a question graded by lagrade in ``image``. Its UUID:
+    ``question_id`` if given, else drawn from ``uuid_seed`` (:func:`question_uuid`), else a random UUID4."""
     from lagrade.problem.describe import template_text
-    from lagrade.problem.library import load_problem
+    from lagrade.problem.library import load_problem, problem_path
 
     check_image(image)
     problem = load_problem(problem_id, problems_dirs)
+    source = Path(problem_id) if Path(problem_id).suffix == ".toml" and Path(problem_id).exists() \
+        else problem_path(problem.id, problems_dirs)
     qid = f"lagrade-{problem.id}"
     if question_id is None:
         question_id = question_uuid(uuid_seed, problem.id) if uuid_seed is not None else str(uuid.uuid4())
@@ -250,9 +303,15 @@ def question_files(problem_id: str, problems_dirs: tuple[Path, ...] = (), *, ima
             "title": f"{problem.id}: {problem.title}", "topic": "Lagrangian and Hamiltonian dynamics",
             "tags": ["lagrade"], "gradingMethod": "External", "singleVariant": True, "partialCredit": True,
             "externalGradingOptions": {"image": image, "entrypoint": ENTRYPOINT, "timeout": 120}}
-    return {"info.json": json.dumps(info, indent=2) + "\n", "question.html": question_html(problem),
-            "server.py": SERVER_PY.format(qid=qid, problem=problem.id, file=ANSWER_FILE),
-            f"clientFilesQuestion/{ANSWER_FILE}": template_text(problem)}
+    return {"info.json": (json.dumps(info, indent=2) + "\n").encode(), "question.html": question_html(problem).encode(),
+            "server.py": SERVER_PY.format(qid=qid, problem=problem.id, file=ANSWER_FILE).encode(),
+            f"clientFilesQuestion/{ANSWER_FILE}": template_text(problem).encode(),
+            f"{TESTS_DIR}/problems/{problem.id}.toml": source.read_bytes()}
+
+
+#: what PrairieLearn shows or serves to students, of a question's files
+def _served(name: str) -> bool:
+    return name == "question.html" or name.startswith("clientFilesQuestion/")
 
 
 def _kept_uuid(info: Path) -> str | None:
@@ -266,39 +325,73 @@ def _kept_uuid(info: Path) -> str | None:
     return value if ok else None
 
 
+def _old_layout(output: Path) -> list[Path]:
+    """What builds before the image had its own folder wrote at the top of ``output``: the Dockerfile
+    that installed the problem data, both wheels, the entry script (removed, so that the old
+    ``docker build`` of ``output`` finds no Dockerfile and cannot push the key again)."""
+    from lagrade.uses.deploy.wheel import DATA_WHEEL
+
+    old = [*output.glob("lagrade-*.whl"), *output.glob(DATA_WHEEL), output / "lagrade-pl-grade"]
+    docker = output / "Dockerfile"
+    try:
+        if docker.read_text(encoding="utf-8").startswith("# lagrade's PrairieLearn external grader"):
+            old.append(docker)
+    except (OSError, UnicodeDecodeError):
+        pass
+    return [p for p in old if p.is_file()]
+
+
 def build_grader(output: Path, problem_id: str = "12.43", problems_dirs: tuple[Path, ...] = (),
                  wheel: Path | None = None, *, image: str, uuid_seed: str | None = None) -> list[str]:
-    """Write the Docker build folder (Dockerfile, wheels, entry script) and one example question
-    (``questions/lagrade-<id>/``) into ``output``; the files written, relative to it.
+    """Write the image's build context (``image/``: Dockerfile, the lagrade engine wheel, entry
+    script) and one question (``questions/lagrade-<id>/``) into ``output``; the files written,
+    relative to it.
+
+    The image is public (PrairieLearn pulls it without credentials), so it holds the engine alone:
+    :func:`lagrade.uses.deploy.keycheck.refuse_keys` checks the whole context once written, and a
+    ``--wheel`` before anything is written; the problem file goes to the question's ``tests/``.
 
     The question's UUID: drawn from ``uuid_seed`` if given; else the one an earlier build left in
     ``output`` (a rebuild is the same question); else a fresh random UUID4, so that two builds never
     collide in one course."""
     import shutil
 
-    from lagrade.uses.deploy.wheel import DATA_WHEEL, check_wheel, grader_wheels
+    from lagrade.uses.deploy.keycheck import KeyInPublic, known_keys, refuse_keys, what_key
+    from lagrade.uses.deploy.wheel import build_wheel, check_wheel
 
     check_image(image)
+    known = known_keys(problems_dirs)
     if wheel is not None:
         check_wheel(wheel)
+        why = what_key(wheel.name, wheel.read_bytes(), known)
+        if why is not None:
+            raise KeyInPublic(f"refusing to put the key into the public image {image}: --wheel {wheel} holds {why}; "
+                              "give the lagrade engine wheel (pip wheel --no-deps . in a checkout), which holds none")
     question = output / "questions" / f"lagrade-{problem_id}"
     kept = _kept_uuid(question / "info.json") if uuid_seed is None else None
     files = question_files(problem_id, problems_dirs, image=image, uuid_seed=uuid_seed, question_id=kept)
-    output.mkdir(parents=True, exist_ok=True)
+    context = output / IMAGE_DIR
+    context.mkdir(parents=True, exist_ok=True)
+    for old in _old_layout(output):
+        if wheel is None or old.resolve() != wheel.resolve():  # the wheel given may be one it left
+            old.unlink()
     with tempfile.TemporaryDirectory(prefix="lagrade-pl-build-") as tmp:
-        engine, data = grader_wheels(Path(tmp) / "wheel", wheel)
-        for old in [*output.glob("lagrade-*.whl"), *output.glob(DATA_WHEEL)]:
-            if old.resolve() not in (engine.resolve(), data.resolve()):
+        engine = wheel if wheel is not None else build_wheel(Path(tmp) / "wheel")
+        for old in context.glob("lagrade-*.whl"):
+            if old.resolve() != engine.resolve():
                 old.unlink()
-        for whl in (engine, data):
-            if whl.resolve() != (output / whl.name).resolve():
-                shutil.copyfile(whl, output / whl.name)
-    (output / "Dockerfile").write_text(DOCKERFILE.format(image=image, wheel=engine.name, data_wheel=data.name,
-                                                         entrypoint=ENTRYPOINT))
-    (output / "lagrade-pl-grade").write_text(ENTRY_SCRIPT)
-    (output / "lagrade-pl-grade").chmod(0o755)
-    written = [engine.name, data.name, "Dockerfile", "lagrade-pl-grade"]
-    _write_question(output, question, files, written)
+        if engine.resolve() != (context / engine.name).resolve():
+            shutil.copyfile(engine, context / engine.name)
+    (context / "Dockerfile").write_text(DOCKERFILE.format(image=image, wheel=engine.name, entrypoint=ENTRYPOINT))
+    (context / "lagrade-pl-grade").write_text(ENTRY_SCRIPT)
+    (context / "lagrade-pl-grade").chmod(0o755)
+    try:
+        refuse_keys(context, f"the public image {image} (its build context {context})", problems_dirs, known)
+    except KeyInPublic:
+        (context / "Dockerfile").unlink()  # no context left that docker could build and push
+        raise
+    written = [f"{IMAGE_DIR}/{name}" for name in (engine.name, "Dockerfile", "lagrade-pl-grade")]
+    _write_question(output, question, files, written, known)
     return written
 
 
@@ -306,18 +399,28 @@ def write_question(output: Path, problem_id: str, problems_dirs: tuple[Path, ...
                    uuid_seed: str | None = None) -> list[str]:
     """One more question graded by the same grader (an assignment's other problems), its UUID chosen as
     `build_grader` chooses the example's (``uuid_seed`` is made the problem's own)."""
+    from lagrade.uses.deploy.keycheck import known_keys
+
     check_image(image)
     question = output / "questions" / f"lagrade-{problem_id}"
     kept = _kept_uuid(question / "info.json") if uuid_seed is None else None
     files = question_files(problem_id, problems_dirs, image=image,
                            uuid_seed=f"{uuid_seed}/{problem_id}" if uuid_seed is not None else None, question_id=kept)
     written: list[str] = []
-    _write_question(output, question, files, written)
+    _write_question(output, question, files, written, known_keys(problems_dirs))
     return written
 
 
-def _write_question(output: Path, question: Path, files: dict[str, str], written: list[str]) -> None:
-    for name, text in files.items():
+def _write_question(output: Path, question: Path, files: dict[str, bytes], written: list[str],
+                    known: dict[str, str]) -> None:
+    """Write the question's files; what PrairieLearn serves to students is checked for a key first."""
+    from lagrade.uses.deploy.keycheck import KeyInPublic, what_key
+
+    for name, data in files.items():
+        why = what_key(name, data, known) if _served(name) else None
+        if why is not None:
+            raise KeyInPublic(f"refusing to serve the key to students: {question / name} would be {why}")
+    for name, data in files.items():
         (question / name).parent.mkdir(parents=True, exist_ok=True)
-        (question / name).write_text(text, encoding="utf-8")
+        (question / name).write_bytes(data)
         written.append(str((question / name).relative_to(output)))
