@@ -237,16 +237,31 @@ class Attempt:
 class Database:
     """The server's gradebook; ``Database("hw7-serve.sqlite")`` or ``Database("postgresql+psycopg://...")``."""
 
-    def __init__(self, db: str) -> None:
+    def __init__(self, db: str, *, claim: bool = False) -> None:
+        """``claim``: hold the database for this server (:meth:`claim`); on SQLite before `Store` opens
+        the file to read its header, so that a second server in this process, refused, never opens
+        and closes a descriptor of the file (that would drop the first one's POSIX locks on it)."""
         self.url = database_url(db)
         self.sqlite_path: Path | None = None
         self._write = threading.Lock()
         self._claim: Any = None  # the lock file (SQLite) or the connection holding the lock (PostgreSQL)
         if self.url.startswith("sqlite:///"):
+            self.sqlite_path = Path(self.url.removeprefix("sqlite:///"))
+        try:
+            self._open(claim)
+            if claim:
+                self.claim()
+        except BaseException:
+            self.release()
+            raise
+
+    def _open(self, claim: bool) -> None:
+        if self.sqlite_path is not None:
             from lagrade.uses.bulk.store import Store
 
-            self.sqlite_path = Path(self.url.removeprefix("sqlite:///"))
-            refuse_foreign(self.sqlite_path)
+            refuse_foreign(self.sqlite_path)  # through SQLite itself, which shares the process's locks
+            if claim:
+                self.claim()
             Store(self.sqlite_path).close()  # the gradebook schema, exactly as `lagrade grade` makes it
             self.engine: Engine = create_engine(self.url, connect_args={"timeout": 30, "check_same_thread": False})
             event.listen(self.engine, "connect", _sqlite_pragmas)
@@ -549,11 +564,26 @@ class Database:
     # ------------------------------------------------------------------ the class
 
     def gradebook(self):
-        """The class as the exports and the HTML report see it (:class:`lagrade.uses.bulk.gradebook.Gradebook`)."""
-        if self.sqlite_path is not None:
-            from lagrade.uses.bulk.gradebook import load_gradebook
+        """The class as the exports and the HTML report see it (:class:`lagrade.uses.bulk.gradebook.Gradebook`).
 
-            return load_gradebook(self.sqlite_path)  # the very reader of `lagrade export`
+        On SQLite, the very reader of `lagrade export` over one of the server's own connections: a
+        second connection of this process's own to the file (sqlite3.connect, even open() to read
+        its header), once closed, would drop the POSIX locks the server's connections hold on it,
+        and another process's writer would then delete the server's write-ahead log (issue 43)."""
+        if self.sqlite_path is not None:
+            import sqlite3
+
+            from lagrade.uses.bulk.gradebook import gradebook_of
+            from lagrade.uses.bulk.store import Store
+
+            with self.engine.connect() as c:
+                raw = c.connection.driver_connection
+                before = raw.row_factory
+                raw.row_factory = sqlite3.Row
+                try:
+                    return gradebook_of(Store.over(raw, self.sqlite_path), self.sqlite_path)
+                finally:
+                    raw.row_factory = before
         return self._gradebook()
 
     def _gradebook(self):

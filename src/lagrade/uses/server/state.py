@@ -56,9 +56,9 @@ class Server:
             raise ValueError(str(exc)) from None
         self.plan = make_plan(self.assignment, config.problems_dirs)
         self.problems = {pid: load_problem(pid, config.problems_dirs) for pid in self.assignment.ids}
-        self.db = Database(config.db)
+        # one server per database (the queue and the rate limits live here), claimed before the file is read
+        self.db = Database(config.db, claim=True)
         try:
-            self.db.claim()  # one server per database: the queue and the rate limits live here
             self.db.setup(self.assignment.canonical_json(), totals(self.plan), self.plan.version, config.roster)
             self.secret = self.db.secret()
         except Exception:
