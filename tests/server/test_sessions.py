@@ -95,12 +95,14 @@ def _serve(app, **kw):
     return server, thread, port
 
 
-@pytest.mark.parametrize("trusted", [True, False])
-def test_a_trusted_proxy_says_https_by_x_forwarded_proto(tmp_path, trusted):
-    """uvicorn believes X-Forwarded-Proto from --forwarded-allow-ips only (127.0.0.1 by default)."""
+@pytest.mark.parametrize("allowed", ["127.0.0.1", "192.0.2.1", ""])
+def test_a_trusted_proxy_says_https_by_x_forwarded_proto(tmp_path, allowed):
+    """uvicorn believes X-Forwarded-Proto from --forwarded-allow-ips only (by default from no one)."""
+    from lagrade.cli.serve import proxy_options
+
+    trusted = allowed == "127.0.0.1"
     app = create_app(make_config(tmp_path), grade=False)
-    server, thread, port = _serve(app, proxy_headers=True,
-                                  forwarded_allow_ips="127.0.0.1" if trusted else "192.0.2.1")
+    server, thread, port = _serve(app, **proxy_options(allowed))
     try:
         conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
         conn.request("GET", "/", headers={"X-Forwarded-Proto": "https"})
