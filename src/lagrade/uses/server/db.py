@@ -53,6 +53,7 @@ from sqlalchemy.engine import Engine
 from sqlalchemy.exc import IntegrityError
 
 from lagrade.uses.bulk.store import SCHEMA_VERSION
+from lagrade.uses.server.tokens import SESSION_SECONDS
 
 metadata = MetaData()
 
@@ -409,10 +410,13 @@ class Database:
     # ------------------------------------------------------------------ browser sessions
 
     def open_session(self, student: str) -> str:
-        """A new session of ``student``: its id (the cookie's value), random, stored only as a hash."""
+        """A new session of ``student``: its id (the cookie's value), random, stored only as a hash.
+        The rows of sessions that have expired (:data:`SESSION_SECONDS`) are deleted meanwhile."""
         sid = secrets.token_urlsafe(32)
+        now = time.time()
         with self._write, self.engine.begin() as c:
-            c.execute(insert(server_sessions).values(key=_session_key(sid), student=student, created_at=time.time()))
+            c.execute(delete(server_sessions).where(server_sessions.c.created_at < now - SESSION_SECONDS))
+            c.execute(insert(server_sessions).values(key=_session_key(sid), student=student, created_at=now))
         return sid
 
     def session_student(self, sid: str, max_age: float) -> str | None:
@@ -422,12 +426,22 @@ class Database:
         with self.engine.connect() as c:
             row = c.execute(select(server_sessions.c.student, server_sessions.c.created_at)
                             .where(server_sessions.c.key == _session_key(sid))).first()
-        return row[0] if row is not None and time.time() - row[1] < max_age else None
+        return (row[0] or None) if row is not None and time.time() - row[1] < max_age else None
 
-    def end_session(self, sid: str) -> None:
-        """Sign-out: the session is gone, whoever holds a copy of its cookie."""
+    def session_ended(self, sid: str) -> bool:
+        """Whether a guest's signed session (:func:`lagrade.uses.server.tokens.guest_session`) was signed out."""
+        with self.engine.connect() as c:
+            return c.execute(select(server_sessions.c.key)
+                             .where(server_sessions.c.key == _session_key(sid))).first() is not None
+
+    def end_session(self, sid: str, issued: float | None = None) -> None:
+        """Sign-out: the session is gone, whoever holds a copy of its cookie. ``issued``: a guest's
+        signed session, which has no row: one is written, with no student, that says it ended (kept
+        until the cookie would have expired anyway)."""
         with self._write, self.engine.begin() as c:
             c.execute(delete(server_sessions).where(server_sessions.c.key == _session_key(sid)))
+            if issued is not None:
+                c.execute(insert(server_sessions).values(key=_session_key(sid), student="", created_at=issued))
 
     @staticmethod
     def _add_student(c, name: str) -> None:
