@@ -153,6 +153,7 @@ class Store:
         _check_file(self.path, create)
         self._lock_fd = None
         self.db = None
+        self._borrowed = False  # Store.over: the connection is someone else's to close
         if lock:
             try:
                 self._lock_fd = os.open(str(self.path) + ".lock", os.O_RDWR | os.O_CREAT, 0o644)
@@ -220,7 +221,7 @@ class Store:
 
     def close(self) -> None:
         if self.db is not None:
-            if not getattr(self, "_borrowed", False):
+            if not self._borrowed:
                 self.db.close()
             self.db = None
         if self._lock_fd is not None:
