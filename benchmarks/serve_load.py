@@ -23,6 +23,10 @@ Then (unless ``--no-probe``) the head-of-line probe, on the same server once the
 student sends ten infinite loops at once, then another student sends the right answer; it prints
 how long that right answer took, and how many of the loops the server took (the rest get 429).
 
+Says what it does as it goes, on stderr (the server's pid and address, the graders warm, every 5 s
+the grades received so far); SIGINT (Ctrl-C), SIGTERM or an error stops the server it started, its
+graders with it, and removes its temporary folder.
+
 Prints p50 / p95 / max latency (send to grade received) of all answers and of the ordinary ones
 (all but the hostile), throughput (grades per second over the run), the CPU time the server
 process and its graders used during the run (where a burst's time goes; benchmarks/serve_profile.py
@@ -109,6 +113,38 @@ def cpu_seconds(root: int) -> tuple[float, float]:
     return own, below
 
 
+T_START = time.monotonic()
+
+
+def say(message: str) -> None:
+    """A progress line on stderr, at once (the results go to stdout at the end)."""
+    print(f"[{time.monotonic() - T_START:7.1f} s] {message}", file=sys.stderr, flush=True)
+
+
+class Stopped(Exception):
+    """SIGTERM: the run stops as on Ctrl-C, through every ``finally``."""
+
+
+def _on_sigterm(signum, frame) -> None:
+    raise Stopped(f"signal {signum}")
+
+
+def stop_server(server: subprocess.Popen) -> None:
+    """SIGINT (uvicorn's graceful stop, which stops the graders), then SIGKILL to the server's whole
+    process group (it was started in a session of its own): nothing of it is left running."""
+    if server.poll() is None:
+        server.send_signal(signal.SIGINT)
+        try:
+            server.wait(timeout=60)
+        except subprocess.TimeoutExpired:
+            pass
+    try:
+        os.killpg(server.pid, signal.SIGKILL)  # a grader or an answer left behind, or the server itself
+    except ProcessLookupError:
+        pass
+    server.wait()
+
+
 def free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -148,10 +184,20 @@ async def run(base: str, tokens: list[str], spread: float, deadline: float, seed
     jobs = [(tokens[i], *pick(rng, pool, i, hostile), rng.uniform(0, spread)) for i in range(len(tokens))]
     out: list[dict] = []
     limits = httpx.Limits(max_connections=len(tokens), max_keepalive_connections=len(tokens))
+    async def progress():
+        while True:
+            await asyncio.sleep(5)
+            ok = sum(1 for r in out if r["ok"])
+            say(f"{ok} graded, {len(out) - ok} errors, {len(jobs) - len(out)} waiting, of {len(jobs)}")
+
     async with httpx.AsyncClient(limits=limits) as client:
         t0 = time.monotonic()
-        await asyncio.gather(*(student(client, base, tok, kind, name, data, at, t0, deadline, out)
-                               for tok, kind, name, data, at in jobs))
+        ticker = asyncio.create_task(progress())
+        try:
+            await asyncio.gather(*(student(client, base, tok, kind, name, data, at, t0, deadline, out)
+                                   for tok, kind, name, data, at in jobs))
+        finally:
+            ticker.cancel()
     return out
 
 
@@ -191,12 +237,26 @@ def main() -> None:
     if args.probe_only:
         args.students = 0
 
+    signal.signal(signal.SIGTERM, _on_sigterm)
     work = Path(tempfile.mkdtemp(prefix="lagrade-serve-load-"))
+    try:
+        measure(args, work)
+    except (KeyboardInterrupt, Stopped) as exc:
+        say(f"stopped ({type(exc).__name__}{': ' + str(exc) if str(exc) else ''}); the server is stopped")
+        sys.exit(130)
+    except RuntimeError as exc:
+        sys.exit(f"serve_load: {exc}")
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def measure(args, work: Path) -> None:
     (work / "hw.toml").write_text('name = "load"\n[[problems]]\nid = "12.14"\n', encoding="utf-8")
     db = work / "serve.sqlite"
     roster = work / "roster.csv"
     roster.write_text("student\n" + "".join(f"s{i:03d}\n" for i in range(args.students)) + "looper\nprober\n",
                       encoding="utf-8")
+    say(f"issuing {args.students + 2} tokens in {work}")
     tokens_csv = subprocess.run([sys.executable, "-m", "lagrade", "tokens", str(roster), "--db", str(db)],
                                 check=True, capture_output=True, text=True).stdout
     issued = dict(line.split(",")[:2] for line in tokens_csv.splitlines()[1:] if not line.startswith("@"))
@@ -210,39 +270,40 @@ def main() -> None:
                                   + ([] if args.spares is None else ["--spare-graders", str(args.spares)]),
                                   stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
     base = f"http://127.0.0.1:{port}"
+    say(f"server pid {server.pid} starting on {base} (log {work / 'serve.log'})")
     try:
         t = time.monotonic()
-        while True:
+        while True:  # /healthz is 200 once a grader is warm
             try:
                 if httpx.get(f"{base}/healthz", timeout=1).status_code == 200:
                     break
             except httpx.HTTPError:
                 pass
-            if server.poll() is not None or time.monotonic() - t > 120:
-                sys.exit(f"the server did not start: {(work / 'serve.log').read_text()[-2000:]}")
+            if server.poll() is not None or time.monotonic() - t > 300:
+                raise RuntimeError(f"the server did not start: {(work / 'serve.log').read_text()[-2000:]}")
             time.sleep(0.2)
-        time.sleep(float(os.environ.get("LAGRADE_LOAD_WARMUP", "15")))  # let the graders warm up first
+        warmup = float(os.environ.get("LAGRADE_LOAD_WARMUP", "15"))
+        say(f"server ready (a grader warm) in {time.monotonic() - t:.1f} s; {warmup:g} s more for the others")
+        time.sleep(warmup)  # let the other graders warm up too
         cpu0 = cpu_seconds(server.pid)
         t0 = time.monotonic()
+        say(f"{len(tokens)} students submit, arriving over {args.spread:g} s")
         results = asyncio.run(run(base, tokens, args.spread, args.deadline, args.seed, args.mix, args.hostile)) \
             if tokens else []
         wall = time.monotonic() - t0
         cpu1 = cpu_seconds(server.pid)
+        if not args.no_probe:
+            say("head-of-line probe: ten infinite loops, then another student's right answer")
         probed = None if args.no_probe else asyncio.run(probe(base, looper, prober))
     finally:
-        server.send_signal(signal.SIGINT)
-        try:
-            server.wait(timeout=60)
-        except subprocess.TimeoutExpired:
-            os.killpg(server.pid, signal.SIGKILL)
-            server.wait()
+        say(f"stopping the server (pid {server.pid})")
+        stop_server(server)
     con = sqlite3.connect(db)
     states = dict(con.execute("SELECT id, state FROM server_submissions").fetchall())
     graded_seconds = con.execute("SELECT sum(seconds) FROM submissions").fetchone()[0] or 0.0
     twice = con.execute("SELECT count(*) FROM (SELECT 1 FROM grade_log GROUP BY student, problem, file_hash, "
                         "grading_hash, grader_version HAVING count(*) > 1)").fetchone()[0]
     con.close()
-    shutil.rmtree(work, ignore_errors=True)
     given = [r["sid"] for r in results if r["sid"] is not None]
     lost = sum(1 for sid in given if states.get(sid) != "graded") + (len(results) - len(given))
     ok = sorted(r["seconds"] for r in results if r["ok"])

@@ -104,3 +104,62 @@ def png_chunks(data: bytes) -> list[str]:
         kinds.append(kind)
         at += 12 + length
     return kinds
+
+
+def free_port() -> int:
+    import socket
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def start_serve(tmp: Path, *extra: str, db: Path | None = None, ready: float = 300.0):
+    """``lagrade serve`` as a process of its own on 127.0.0.1 (one grader, no spare), in a session of its
+    own (``os.killpg`` ends it and its graders): ``(process, base URL, log file)`` once /healthz answers 200."""
+    import subprocess
+    import sys
+
+    import httpx
+
+    if not (tmp / "hw.toml").exists():
+        (tmp / "hw.toml").write_text(ASSIGNMENT, encoding="utf-8")
+    port = free_port()
+    log_path = tmp / f"serve-{port}.log"
+    with open(log_path, "wb") as log:  # the child keeps its own descriptor
+        proc = subprocess.Popen([sys.executable, "-m", "lagrade", "serve", "--assignment", str(tmp / "hw.toml"),
+                                 "--db", str(db or tmp / "serve.sqlite"), "--port", str(port), "--workers", "1",
+                                 "--spare-graders", "0", *extra],
+                                stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+    base = f"http://127.0.0.1:{port}"
+    end = time.monotonic() + ready
+    while time.monotonic() < end:
+        try:
+            if httpx.get(f"{base}/healthz", timeout=1).status_code == 200:
+                return proc, base, log_path
+        except httpx.HTTPError:
+            pass
+        if proc.poll() is not None:
+            raise AssertionError(log_path.read_text())
+        time.sleep(0.1)
+    stop_serve(proc)
+    raise AssertionError(f"the server did not become ready in {ready:g} s: {log_path.read_text()[-2000:]}")
+
+
+def stop_serve(proc, kill: bool = False) -> None:
+    """SIGINT (a graceful stop), or ``kill``: SIGKILL to the server and its graders at once (kill -9)."""
+    import os
+    import signal
+    import subprocess
+
+    if proc.poll() is not None:
+        return
+    if not kill:
+        proc.send_signal(signal.SIGINT)
+        try:
+            proc.wait(timeout=30)
+            return
+        except subprocess.TimeoutExpired:
+            pass
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()

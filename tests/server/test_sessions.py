@@ -95,12 +95,14 @@ def _serve(app, **kw):
     return server, thread, port
 
 
-@pytest.mark.parametrize("trusted", [True, False])
-def test_a_trusted_proxy_says_https_by_x_forwarded_proto(tmp_path, trusted):
-    """uvicorn believes X-Forwarded-Proto from --forwarded-allow-ips only (127.0.0.1 by default)."""
+@pytest.mark.parametrize("allowed", ["127.0.0.1", "192.0.2.1", ""])
+def test_a_trusted_proxy_says_https_by_x_forwarded_proto(tmp_path, allowed):
+    """uvicorn believes X-Forwarded-Proto from --forwarded-allow-ips only (by default from no one)."""
+    from lagrade.cli.serve import proxy_options
+
+    trusted = allowed == "127.0.0.1"
     app = create_app(make_config(tmp_path), grade=False)
-    server, thread, port = _serve(app, proxy_headers=True,
-                                  forwarded_allow_ips="127.0.0.1" if trusted else "192.0.2.1")
+    server, thread, port = _serve(app, **proxy_options(allowed))
     try:
         conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
         conn.request("GET", "/", headers={"X-Forwarded-Proto": "https"})
@@ -153,14 +155,72 @@ def test_an_open_server_gives_each_browser_its_own_guest(tmp_path):
                              headers={"X-CSRF-Token": csrf_token(app.state.server.secret, sid)})
             assert r.status_code == 202
         assert names[0] != names[1] and all(n.startswith("guest-") for n in names)
-        # a guest's cookie is a session of this server, not a token signed for "guest-..." that
-        # would sign that guest in anywhere, for ever
+        # a guest's cookie is a session of this server (signed, with its time of issue), not a token
+        # signed for "guest-..." that would sign that guest in anywhere, for ever
         assert student_of(app.state.server.secret, one.cookies[SESSION_COOKIE]) is None
         assert names[0] == re.search(r"data-student>([^<]+)<", one.get("/").text).group(1)  # it stays
         mine = one.get("/api/v1/problems/12.22/submissions").json()
         assert len(mine) == 1  # the other browser's attempt is not this one's
         # a guest's cookie call needs its CSRF token too
         assert one.post("/api/v1/problems/12.22/check", json=ANSWER).status_code == 403
+
+
+def _session_rows(db) -> int:
+    import sqlalchemy as sa
+
+    with db.engine.connect() as c:
+        return c.execute(sa.text("SELECT count(*) FROM server_sessions")).scalar_one()
+
+
+def test_an_open_server_writes_no_session_row_per_visit(tmp_path):
+    """Issue 43: every visit of a client that keeps no cookie (a crawler, a script, a link preview)
+    wrote a guest's session row, never deleted. A guest's cookie is signed; a row is written only
+    when a guest signs out (so that a copy of the cookie signs nobody in after)."""
+    app = create_app(make_config(tmp_path, open=True), grade=False)
+    db = app.state.server.db
+    with TestClient(app) as crawler, TestClient(app) as browser:
+        for _ in range(40):
+            crawler.cookies.clear()
+            assert crawler.get("/").status_code == 200 and crawler.get("/p/12.22").status_code == 200
+        assert _session_rows(db) == 0
+        name = re.search(r"data-student>([^<]+)<", browser.get("/").text).group(1)
+        sid = browser.cookies[SESSION_COOKIE]
+        csrf = {"X-CSRF-Token": csrf_token(app.state.server.secret, sid)}
+        assert browser.post("/api/v1/problems/12.22/check", json=ANSWER, headers=csrf).status_code == 202
+        for _ in range(10):
+            assert re.search(r"data-student>([^<]+)<", browser.get("/").text).group(1) == name
+        assert _session_rows(db) == 0
+        with TestClient(app) as copy:
+            copy.cookies.set(SESSION_COOKIE, sid)
+            assert len(copy.get("/api/v1/problems/12.22/submissions").json()) == 1  # the same guest
+            r = browser.post("/logout", data={"csrf": csrf["X-CSRF-Token"]}, follow_redirects=False)
+            assert r.status_code == 303 and _session_rows(db) == 1
+            assert copy.get("/api/v1/problems/12.22/submissions").json() == []  # signed out: "guest", shared
+        forged = sid.rsplit(".", 1)[0] + ".0" * 16
+        crawler.cookies.set(SESSION_COOKIE, forged)
+        assert name not in crawler.get("/").text
+    # a guest's cookie is refused once the server is not --open
+    (tmp_path / "closed").mkdir()
+    closed = create_app(make_config(tmp_path / "closed", db=str(tmp_path / "serve.sqlite")), grade=False)
+    with TestClient(closed) as client:
+        client.cookies.set(SESSION_COOKIE, sid)
+        assert client.get("/api/v1/problems").status_code == 401
+
+
+def test_expired_session_rows_are_deleted(quiet_app):
+    import sqlalchemy as sa
+
+    from lagrade.uses.server.db import server_sessions
+    from lagrade.uses.server.state import SESSION_SECONDS
+
+    app, client = quiet_app
+    db = app.state.server.db
+    old = db.open_session("alice")
+    with db.engine.begin() as c:
+        c.execute(sa.update(server_sessions).values(created_at=time.time() - SESSION_SECONDS - 1))
+    assert db.session_student(old, SESSION_SECONDS) is None and _session_rows(db) == 1
+    sign_in(app, client, "bob")
+    assert _session_rows(db) == 1  # bob's; alice's expired row is gone
 
 
 def test_refused_tokens_are_counted_logged_and_slowed(tmp_path, caplog):

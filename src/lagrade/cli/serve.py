@@ -50,8 +50,9 @@ def _roster(path: Path | None) -> tuple[str, ...] | None:
               help="The certificate's private key (PEM).")
 @click.option("--https", "https", is_flag=True,
               help="Students reach the server over HTTPS through a reverse proxy in front: cookies are always Secure.")
-@click.option("--forwarded-allow-ips", default="127.0.0.1", show_default=True,
-              help="Proxies whose X-Forwarded-Proto/-For are believed (comma-separated IPs or networks).")
+@click.option("--forwarded-allow-ips", envvar="LAGRADE_FORWARDED_ALLOW_IPS", default="",
+              help="The reverse proxy in front (comma-separated IPs or networks, e.g. 127.0.0.1): only requests "
+                   "from it may say X-Forwarded-For/-Proto. Default: none, every request is its peer's address.")
 @click.option("--workers", "-j", type=click.IntRange(min=1), default=2, show_default=True, help="Warm grader processes.")
 @click.option("--spare-graders", type=click.IntRange(min=0), default=4, show_default=True,
               help="Warm graders that take fresh checks while others run slow ones (over 1.5 s of CPU).")
@@ -97,13 +98,28 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     err.print(banner(db, len(config.roster or ()), open_), soft_wrap=True)
     if warning := plain_http_warning(host, ssl_certfile is not None, https):
         err.print(warning, soft_wrap=True)
+    if https and not forwarded_allow_ips.strip():
+        err.print("lagrade serve: note: --https without --forwarded-allow-ips: X-Forwarded-For is believed from "
+                  "no one, so a proxy in front is every student's address (the failed sign-in bound is shared); "
+                  "give the proxy's address, e.g. --forwarded-allow-ips 127.0.0.1", soft_wrap=True)
     scheme = "https" if ssl_certfile is not None else "http"
     err.print(f"class page: {scheme}://{address}:{port}/login?token={token}", soft_wrap=True)
     if lti is not None:
         err.print(f"LTI 1.3: what the LMS needs is at {app.state.lti.url}/lti/config", soft_wrap=True)
     tls = {"ssl_certfile": str(ssl_certfile), "ssl_keyfile": str(ssl_keyfile)} if ssl_certfile else {}
-    uvicorn.run(app, host=host, port=port, log_level="warning", timeout_graceful_shutdown=10, proxy_headers=True,
-                forwarded_allow_ips=forwarded_allow_ips, **tls)
+    uvicorn.run(app, host=host, port=port, log_level="warning", timeout_graceful_shutdown=10, **tls,
+                **proxy_options(forwarded_allow_ips))
+
+
+def proxy_options(forwarded_allow_ips: str) -> dict:
+    """uvicorn's proxy settings: X-Forwarded-For/-Proto believed only from the proxies named, and from
+    none by default. uvicorn's own default believes 127.0.0.1, so anything on the server's machine (or
+    a tunnel ending there) could say it is any address, and a new address for each refused token
+    never reached the failed sign-in bound (issue 43)."""
+    trusted = ",".join(part.strip() for part in forwarded_allow_ips.split(",") if part.strip())
+    if not trusted:
+        return {"proxy_headers": False}
+    return {"proxy_headers": True, "forwarded_allow_ips": trusted}
 
 
 def plain_http_warning(host: str, tls: bool, https: bool) -> str | None:

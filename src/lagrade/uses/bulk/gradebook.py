@@ -76,36 +76,42 @@ class Gradebook:
 
 def load_gradebook(db: Path | str) -> Gradebook:
     with Store(db, create=False) as store:
-        raw = store.meta("assignment")
-        if raw is None:
-            raise StoreError(f"{db}: nothing graded yet (run 'lagrade grade' first)")
-        assignment = parse_assignment(json.loads(raw), str(db))
-        totals = json.loads(store.meta("problem_totals") or "{}")
-        extras = json.loads(store.meta("problem_extras") or "{}")  # a gradebook from before: none
-        subs = {(r["student"], r["problem"]): r for r in store.submissions()}
-        parts: dict[tuple[str, str], list[dict]] = {}
-        for r in store.parts():
-            parts.setdefault((r["student"], r["problem"]), []).append(
-                {**dict(r), "extra": r["part"] in extras.get(r["problem"], ())})
-        names = sorted(set(store.students()) | {s for s, _ in subs})
-        students = []
-        for name in names:
-            grades = {}
-            for ap in assignment.problems:
-                row = subs.get((name, ap.id))
-                ps = parts.get((name, ap.id), [])
-                pts, possible = points(ap, ps, totals.get(ap.id, 0.0))
-                if row is None:
-                    grades[ap.id] = ProblemGrade(ap.id, 0.0, possible, False, reason="no file handed in")
-                else:
-                    grades[ap.id] = ProblemGrade(ap.id, pts, possible, True, row["outcome"], row["status"],
-                                                 row["reason"], json.loads(row["problems"]), ps, row["source"],
-                                                 row["path"], row["plot_png"] if "plot_png" in row.keys() else None)
-            students.append(StudentGrade(name, grades))
-        skipped = [(r["path"], r["reason"]) for r in store.skipped()]
-        try:
-            lms = json.loads(store.meta("lms") or "{}")
-        except ValueError:
-            lms = {}
-        return Gradebook(assignment, students, skipped, store.meta("grader_version") or "",
-                         lms if isinstance(lms, dict) else {})
+        return gradebook_of(store, db)
+
+
+def gradebook_of(store: Store, db: Path | str) -> Gradebook:
+    """The Gradebook of an open :class:`Store` (``db`` names it in messages): `lagrade serve` reads its
+    own file through its own connection (:meth:`Store.over`), never a second one."""
+    raw = store.meta("assignment")
+    if raw is None:
+        raise StoreError(f"{db}: nothing graded yet (run 'lagrade grade' first)")
+    assignment = parse_assignment(json.loads(raw), str(db))
+    totals = json.loads(store.meta("problem_totals") or "{}")
+    extras = json.loads(store.meta("problem_extras") or "{}")  # a gradebook from before: none
+    subs = {(r["student"], r["problem"]): r for r in store.submissions()}
+    parts: dict[tuple[str, str], list[dict]] = {}
+    for r in store.parts():
+        parts.setdefault((r["student"], r["problem"]), []).append(
+            {**dict(r), "extra": r["part"] in extras.get(r["problem"], ())})
+    names = sorted(set(store.students()) | {s for s, _ in subs})
+    students = []
+    for name in names:
+        grades = {}
+        for ap in assignment.problems:
+            row = subs.get((name, ap.id))
+            ps = parts.get((name, ap.id), [])
+            pts, possible = points(ap, ps, totals.get(ap.id, 0.0))
+            if row is None:
+                grades[ap.id] = ProblemGrade(ap.id, 0.0, possible, False, reason="no file handed in")
+            else:
+                grades[ap.id] = ProblemGrade(ap.id, pts, possible, True, row["outcome"], row["status"],
+                                             row["reason"], json.loads(row["problems"]), ps, row["source"],
+                                             row["path"], row["plot_png"] if "plot_png" in row.keys() else None)
+        students.append(StudentGrade(name, grades))
+    skipped = [(r["path"], r["reason"]) for r in store.skipped()]
+    try:
+        lms = json.loads(store.meta("lms") or "{}")
+    except ValueError:
+        lms = {}
+    return Gradebook(assignment, students, skipped, store.meta("grader_version") or "",
+                     lms if isinstance(lms, dict) else {})

@@ -153,6 +153,7 @@ class Store:
         _check_file(self.path, create)
         self._lock_fd = None
         self.db = None
+        self._borrowed = False  # Store.over: the connection is someone else's to close
         if lock:
             try:
                 self._lock_fd = os.open(str(self.path) + ".lock", os.O_RDWR | os.O_CREAT, 0o644)
@@ -199,6 +200,19 @@ class Store:
                 raise StoreError(f"{self.path}: schema version {version}, this lagrade writes {SCHEMA_VERSION}")
             self._migrate()
 
+    @classmethod
+    def over(cls, connection: sqlite3.Connection, path: Path | str) -> "Store":
+        """A reader over a connection someone else opened and keeps (the server's own, to the file it
+        serves): it never opens the file, and :meth:`close` leaves the connection open.
+
+        Why: opening and closing any descriptor of a database file in a process drops every POSIX
+        lock that process holds on it (SQLite's own connections share theirs, a second open does
+        not), and another process's last connection then deletes the write-ahead log under the
+        server. The connection's ``row_factory`` must be :class:`sqlite3.Row` while it is read."""
+        store = cls.__new__(cls)
+        store.path, store.db, store._lock_fd, store._borrowed = Path(path), connection, None, True
+        return store
+
     def _migrate(self) -> None:
         """Add the columns that gradebooks written by an older lagrade lack (their rows get the default)."""
         for table, column, definition in COLUMNS_ADDED:
@@ -207,7 +221,8 @@ class Store:
 
     def close(self) -> None:
         if self.db is not None:
-            self.db.close()
+            if not self._borrowed:
+                self.db.close()
             self.db = None
         if self._lock_fd is not None:
             os.close(self._lock_fd)

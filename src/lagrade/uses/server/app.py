@@ -21,6 +21,7 @@ from lagrade.uses.server.state import Server
 def create_app(config: ServerConfig, *, grade: bool = True) -> FastAPI:
     """The ASGI app. ``grade=False`` starts no graders (tests of what needs none)."""
     server = Server(config)
+    server.grades = grade
     lti_ = _lti(config, server)
 
     @asynccontextmanager

@@ -53,6 +53,7 @@ from sqlalchemy.engine import Engine
 from sqlalchemy.exc import IntegrityError
 
 from lagrade.uses.bulk.store import SCHEMA_VERSION
+from lagrade.uses.server.tokens import SESSION_SECONDS
 
 metadata = MetaData()
 
@@ -237,16 +238,31 @@ class Attempt:
 class Database:
     """The server's gradebook; ``Database("hw7-serve.sqlite")`` or ``Database("postgresql+psycopg://...")``."""
 
-    def __init__(self, db: str) -> None:
+    def __init__(self, db: str, *, claim: bool = False) -> None:
+        """``claim``: hold the database for this server (:meth:`claim`); on SQLite before `Store` opens
+        the file to read its header, so that a second server in this process, refused, never opens
+        and closes a descriptor of the file (that would drop the first one's POSIX locks on it)."""
         self.url = database_url(db)
         self.sqlite_path: Path | None = None
         self._write = threading.Lock()
         self._claim: Any = None  # the lock file (SQLite) or the connection holding the lock (PostgreSQL)
         if self.url.startswith("sqlite:///"):
+            self.sqlite_path = Path(self.url.removeprefix("sqlite:///"))
+        try:
+            self._open(claim)
+            if claim:
+                self.claim()
+        except BaseException:
+            self.release()
+            raise
+
+    def _open(self, claim: bool) -> None:
+        if self.sqlite_path is not None:
             from lagrade.uses.bulk.store import Store
 
-            self.sqlite_path = Path(self.url.removeprefix("sqlite:///"))
-            refuse_foreign(self.sqlite_path)
+            refuse_foreign(self.sqlite_path)  # through SQLite itself, which shares the process's locks
+            if claim:
+                self.claim()
             Store(self.sqlite_path).close()  # the gradebook schema, exactly as `lagrade grade` makes it
             self.engine: Engine = create_engine(self.url, connect_args={"timeout": 30, "check_same_thread": False})
             event.listen(self.engine, "connect", _sqlite_pragmas)
@@ -394,10 +410,13 @@ class Database:
     # ------------------------------------------------------------------ browser sessions
 
     def open_session(self, student: str) -> str:
-        """A new session of ``student``: its id (the cookie's value), random, stored only as a hash."""
+        """A new session of ``student``: its id (the cookie's value), random, stored only as a hash.
+        The rows of sessions that have expired (:data:`SESSION_SECONDS`) are deleted meanwhile."""
         sid = secrets.token_urlsafe(32)
+        now = time.time()
         with self._write, self.engine.begin() as c:
-            c.execute(insert(server_sessions).values(key=_session_key(sid), student=student, created_at=time.time()))
+            c.execute(delete(server_sessions).where(server_sessions.c.created_at < now - SESSION_SECONDS))
+            c.execute(insert(server_sessions).values(key=_session_key(sid), student=student, created_at=now))
         return sid
 
     def session_student(self, sid: str, max_age: float) -> str | None:
@@ -407,12 +426,22 @@ class Database:
         with self.engine.connect() as c:
             row = c.execute(select(server_sessions.c.student, server_sessions.c.created_at)
                             .where(server_sessions.c.key == _session_key(sid))).first()
-        return row[0] if row is not None and time.time() - row[1] < max_age else None
+        return (row[0] or None) if row is not None and time.time() - row[1] < max_age else None
 
-    def end_session(self, sid: str) -> None:
-        """Sign-out: the session is gone, whoever holds a copy of its cookie."""
+    def session_ended(self, sid: str) -> bool:
+        """Whether a guest's signed session (:func:`lagrade.uses.server.tokens.guest_session`) was signed out."""
+        with self.engine.connect() as c:
+            return c.execute(select(server_sessions.c.key)
+                             .where(server_sessions.c.key == _session_key(sid))).first() is not None
+
+    def end_session(self, sid: str, issued: float | None = None) -> None:
+        """Sign-out: the session is gone, whoever holds a copy of its cookie. ``issued``: a guest's
+        signed session, which has no row: one is written, with no student, that says it ended (kept
+        until the cookie would have expired anyway)."""
         with self._write, self.engine.begin() as c:
             c.execute(delete(server_sessions).where(server_sessions.c.key == _session_key(sid)))
+            if issued is not None:
+                c.execute(insert(server_sessions).values(key=_session_key(sid), student="", created_at=issued))
 
     @staticmethod
     def _add_student(c, name: str) -> None:
@@ -549,11 +578,26 @@ class Database:
     # ------------------------------------------------------------------ the class
 
     def gradebook(self):
-        """The class as the exports and the HTML report see it (:class:`lagrade.uses.bulk.gradebook.Gradebook`)."""
-        if self.sqlite_path is not None:
-            from lagrade.uses.bulk.gradebook import load_gradebook
+        """The class as the exports and the HTML report see it (:class:`lagrade.uses.bulk.gradebook.Gradebook`).
 
-            return load_gradebook(self.sqlite_path)  # the very reader of `lagrade export`
+        On SQLite, the very reader of `lagrade export` over one of the server's own connections: a
+        second connection of this process's own to the file (sqlite3.connect, even open() to read
+        its header), once closed, would drop the POSIX locks the server's connections hold on it,
+        and another process's writer would then delete the server's write-ahead log (issue 43)."""
+        if self.sqlite_path is not None:
+            import sqlite3
+
+            from lagrade.uses.bulk.gradebook import gradebook_of
+            from lagrade.uses.bulk.store import Store
+
+            with self.engine.connect() as c:
+                raw = c.connection.driver_connection
+                before = raw.row_factory
+                raw.row_factory = sqlite3.Row
+                try:
+                    return gradebook_of(Store.over(raw, self.sqlite_path), self.sqlite_path)
+                finally:
+                    raw.row_factory = before
         return self._gradebook()
 
     def _gradebook(self):

@@ -37,8 +37,8 @@ from typing import Any
 from lagrade.uses.bulk.assignment import Assignment
 from lagrade.uses.bulk.layout import Submission
 from lagrade.uses.bulk.runner import Plan, plan, problem_totals
-from lagrade.uses.bulk.worker import (CPU_BUDGET, GRADER_BUDGET, GraderProcess, failed_result, look_after, stop_all,
-                                     watch)
+from lagrade.uses.bulk.worker import (CPU_BUDGET, GRADER_BUDGET, GraderProcess, WorkerDied, failed_result, look_after,
+                                     stop_all, watch)
 from lagrade.verdicts.result import CheckResult, PartResult
 from lagrade.uses.server.db import Attempt, Database
 
@@ -185,6 +185,7 @@ class GradingQueue:
         self._stopping = False
         self._thread: threading.Thread | None = None
         self.graded = 0
+        self._dask_warm = False  # the Dask workers' graders are warm (`_run_dask`)
         #: called with an attempt's id once its grade is written (the LMS grade sender's wake-up)
         self.on_graded = None
 
@@ -222,6 +223,13 @@ class GradingQueue:
         """An admitted check that is not queued after all (the same file again, or a failure)."""
         with self._lock:
             self._settle(student)
+
+    def ready(self) -> int:
+        """How many warm graders there are (0: a check now would wait for one to warm up, seconds on a
+        loaded machine): what /healthz answers on. On Dask, 1 once the workers' graders are warm."""
+        if self.scheduler is not None:
+            return int(self._dask_warm)
+        return sum(1 for g in list(self.graders) if g.ready)
 
     def pending(self) -> int:
         with self._lock:
@@ -483,9 +491,14 @@ class GradingQueue:
                 # while a grading may go over its budget, look every 0.1 s (a walk of /proc costs
                 # about a millisecond): each tenth of a second later is CPU the quick answers lose
                 watched = any(not g.lowered and now - g.started > self.cpu_budget / 2 for g in busy)
-                ready = wait([g.recv_conn for g in busy] + [self._wake_r], timeout=0.1 if watched else 0.25)
+                # an idle grader still warming says so when it is warm (read here: only then is the
+                # server ready, /healthz); a busy one's word is read with its result (look_after)
+                warming = [g for g in graders if g.job is None and not g.ready]
+                ready = wait([g.recv_conn for g in busy + warming] + [self._wake_r],
+                             timeout=0.1 if watched else 0.25)
                 if self._wake_r in ready:
                     os.read(self._wake_r, 4096)
+                self._warmed([g for g in warming if g.recv_conn in ready])
                 with self._lock:
                     self._slow_free = 0  # a grader that answers takes no rerun: the next round decides
                 look_after(graders, sources, ready, time.monotonic(), self._done, self._next)
@@ -496,6 +509,21 @@ class GradingQueue:
                 if g.job is not None:
                     g.kill()  # its attempt stays queued in the database
             stop_all([g for g in graders if g.job is None])
+
+    def _warmed(self, warm: list[GraderProcess]) -> None:
+        """Read the readiness word of idle graders that said something: warm, or replaced if it died
+        warming up; a grader that could not start stops the thread, as in :func:`look_after`."""
+        for g in warm:
+            try:
+                g.wait_ready(timeout=0)
+            except TimeoutError:
+                continue
+            except WorkerDied as exc:
+                if "could not start" in str(exc):
+                    raise
+                g.kill()
+                self.graders[self.graders.index(g)] = GraderProcess(self.plan.sources)
+                log.warning("a grader process died while warming up; another is started")
 
     def _run_dask(self) -> None:
         """The same queue on a Dask cluster: bulk grading's Dask task (``dask_grade``) per attempt."""
@@ -513,6 +541,7 @@ class GradingQueue:
             for addr, w in info["workers"].items():
                 client.run(dask_warm, self.plan.sources, w.get("nthreads", 1), workers=[addr])
             sources = client.scatter(self.plan.sources, broadcast=True)
+            self._dask_warm = True
             while not self._stopping:
                 while (job := self._next()) is not None:
                     flying[client.submit(dask_grade, job, sources, pure=False, retries=1)] = job

@@ -647,7 +647,7 @@ async def launch(request: Request):
     # a session of this browser (sign-out ends it), never the student's permanent token in a cookie
     old = request.cookies.get(SESSION_COOKIE)
     if old:
-        await asyncio.to_thread(lti.server.db.end_session, old)  # one browser, one session
+        await asyncio.to_thread(lti.server.end_session, old)  # one browser, one session
     sid = await asyncio.to_thread(lti.server.db.open_session, student)
     web._set_session(request, response, sid)
     return response

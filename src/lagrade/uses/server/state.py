@@ -6,6 +6,7 @@ from __future__ import annotations
 import hmac
 import logging
 import math
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -14,11 +15,9 @@ from fastapi import HTTPException, Request
 from lagrade.uses.server.config import ServerConfig
 from lagrade.uses.server.limits import RateLimit
 from lagrade.uses.server.preview import PreviewWorker
-from lagrade.uses.server.tokens import INSTRUCTOR, csrf_token, student_of
+from lagrade.uses.server.tokens import SESSION_SECONDS, INSTRUCTOR, csrf_token, guest_of, student_of  # noqa: F401
 
 SESSION_COOKIE = "lagrade_session"
-#: how long a browser session lasts (a term), unless signed out before
-SESSION_SECONDS = 120 * 24 * 3600
 log = logging.getLogger("lagrade.uses.server")
 LIST_KINDS = ("eom", "hamilton_eqs", "expression_set", "names", "conserved")
 
@@ -56,9 +55,9 @@ class Server:
             raise ValueError(str(exc)) from None
         self.plan = make_plan(self.assignment, config.problems_dirs)
         self.problems = {pid: load_problem(pid, config.problems_dirs) for pid in self.assignment.ids}
-        self.db = Database(config.db)
+        # one server per database (the queue and the rate limits live here), claimed before the file is read
+        self.db = Database(config.db, claim=True)
         try:
-            self.db.claim()  # one server per database: the queue and the rate limits live here
             self.db.setup(self.assignment.canonical_json(), totals(self.plan), self.plan.version, config.roster)
             self.secret = self.db.secret()
         except Exception:
@@ -72,6 +71,8 @@ class Server:
         self.preview_limit = RateLimit(config.previews_per_minute, config.preview_burst)
         self.previews = PreviewWorker(config.problems_dirs, config.preview_seconds)
         self.queue = None
+        #: whether this server grades (create_app's ``grade``): /healthz then waits for a warm grader
+        self.grades = True
         # made once, here: the same text for every request
         self._texts = {(command, pid): self._print(command, pid) for pid in self.problems
                        for command in ("show", "template")}
@@ -164,7 +165,10 @@ class Server:
                                     headers={"WWW-Authenticate": "Bearer"})
             return Who(self._allowed(student))
         cookie = request.cookies.get(SESSION_COOKIE)
-        if cookie:
+        if cookie and self.config.open and (guest := guest_of(self.secret, cookie, time.time())) is not None:
+            if not self.db.session_ended(cookie):  # a guest's cookie: signed, and a row only once signed out
+                return Who(guest[0], cookie)
+        elif cookie:
             student = self.db.session_student(cookie, SESSION_SECONDS)
             if student is not None:
                 return Who(self._allowed(student), cookie)
@@ -172,6 +176,12 @@ class Server:
             return Who("guest")
         raise HTTPException(401, "no token; expected 'Authorization: Bearer <token>' (or sign in on the web page)",
                             headers={"WWW-Authenticate": "Bearer"})
+
+    def end_session(self, sid: str) -> None:
+        """Sign-out (or a new sign-in in the same browser): the session ends wherever its cookie is;
+        a guest's signed cookie gets a row that says so."""
+        guest = guest_of(self.secret, sid, time.time()) if self.config.open else None
+        self.db.end_session(sid, issued=guest[1] if guest is not None else None)
 
     def failed_sign_in(self, request: Request, how: str) -> None:
         """A token this server did not sign (or signed for someone off the roster): counted and

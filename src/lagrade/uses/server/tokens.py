@@ -17,6 +17,10 @@ from pathlib import Path
 
 INSTRUCTOR = "@instructor"
 PREFIX = "lg1"
+#: how long a browser session lasts (a term), unless signed out before; older session rows are deleted
+SESSION_SECONDS = 120 * 24 * 3600
+#: an --open server's guest session: a cookie this server signed, never a row written per visit
+GUEST_PREFIX = "g1"
 
 
 def issue(secret: bytes, student: str) -> str:
@@ -80,3 +84,34 @@ def login_csrf(secret: bytes, nonce: str) -> str:
     """The sign-in form's token, tied to the nonce in the browser's sign-in cookie: a page of another
     site cannot sign a browser in (as the attacker, to read what the student then types)."""
     return hmac.new(secret, f"login:{nonce}".encode(), hashlib.sha256).hexdigest()[:32]
+
+
+def guest_session(secret: bytes, now: float) -> tuple[str, str]:
+    """A new guest of an ``--open`` server: (the session cookie's value, the guest's name).
+
+    Signed, not stored: a browser, a crawler or a script that keeps no cookie gets a new guest on
+    every visit, and a row for each was written and never deleted (issue 43). The cookie holds no
+    student token (it signs nobody in with a Bearer header, nor on another server, nor on this one
+    once it is not --open) and its time of issue, so that it ends with :data:`SESSION_SECONDS`;
+    sign-out keeps a row of the ended session until then (:meth:`Database.end_session`)."""
+    import secrets
+
+    name, issued = secrets.token_hex(8), str(int(now))
+    return f"{GUEST_PREFIX}.{name}.{issued}.{_guest_mac(secret, name, issued)}", f"guest-{name}"
+
+
+def guest_of(secret: bytes, sid: str, now: float) -> tuple[str, float] | None:
+    """(The guest's name, when its cookie was issued) for a guest cookie this server signed that has
+    not expired; None for anything else."""
+    try:
+        prefix, name, issued, mac = sid.split(".")
+        when = float(int(issued))
+    except ValueError:
+        return None
+    if prefix != GUEST_PREFIX or len(name) != 16 or not hmac.compare_digest(mac, _guest_mac(secret, name, issued)):
+        return None
+    return (f"guest-{name}", when) if 0 <= now - when < SESSION_SECONDS else None
+
+
+def _guest_mac(secret: bytes, name: str, issued: str) -> str:
+    return hmac.new(secret, f"guest:{name}.{issued}".encode(), hashlib.sha256).hexdigest()[:32]

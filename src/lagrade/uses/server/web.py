@@ -8,6 +8,7 @@ import json
 import mimetypes
 import secrets
 import tempfile
+import time
 from pathlib import Path
 from typing import Annotated
 
@@ -18,7 +19,7 @@ from fastapi.templating import Jinja2Templates
 from lagrade.uses.server.answers import AnswerTextError, to_toml
 from lagrade.uses.server.api import MAX_ID, submit
 from lagrade.uses.server.state import SESSION_COOKIE, SESSION_SECONDS, TEMPLATES, Who
-from lagrade.uses.server.tokens import login_csrf, student_of
+from lagrade.uses.server.tokens import guest_session, login_csrf, student_of
 
 router = APIRouter(include_in_schema=False)
 templates = Jinja2Templates(directory=str(TEMPLATES))
@@ -91,8 +92,7 @@ def _who(request: Request) -> tuple[Who | None, str | None]:
     except HTTPException:
         return None, None
     if who.session is None and server.config.open:  # a browser on an open server: a guest of its own
-        student = f"guest-{secrets.token_hex(8)}"
-        sid = server.db.open_session(student)
+        sid, student = guest_session(server.secret, time.time())  # signed: no row written per visit
         return Who(student, sid), sid
     if who.session is None:
         return None, None  # a Bearer header is for the API; the pages want a signed-in browser
@@ -177,7 +177,7 @@ async def login_form(request: Request):
         return _sign_in_page(request, {"error": exc.detail}, status=401)
     old = request.cookies.get(SESSION_COOKIE)
     if old:
-        server.db.end_session(old)  # one browser, one session: the one it had ends
+        server.end_session(old)  # one browser, one session: the one it had ends
     response = RedirectResponse("/", status_code=303)
     _set_session(request, response, server.db.open_session(student))
     response.delete_cookie(LOGIN_COOKIE, path="/")
@@ -193,7 +193,7 @@ async def logout(request: Request):
     if who is not None:
         server.require_csrf(who, str(form.get("csrf", "")))
         if who.session:
-            server.db.end_session(who.session)
+            server.end_session(who.session)
     response = RedirectResponse("/", status_code=303)
     response.delete_cookie(SESSION_COOKIE, path="/")
     return response
@@ -314,6 +314,18 @@ def class_page(path: str, request: Request):
 
 
 @router.get("/healthz")
-def health(request: Request) -> dict:
+def health(request: Request):
+    """200 once the server can grade: a grader is warm (the first check on a loaded machine otherwise
+    waited over a minute for one to warm up behind a green health check); until then 503 with
+    ``Retry-After``, so that a load balancer or a deploy script waits. An app made without graders
+    (``create_app(grade=False)``, the tests') has none to wait for."""
+    from fastapi.responses import JSONResponse
+
     server = _server(request)
-    return {"ok": True, "queued": server.queue.pending() if server.queue else 0}
+    queue = server.queue
+    warm = queue.ready() if queue is not None else 0
+    ok = warm > 0 or not server.grades
+    body = {"ok": ok, "graders_ready": warm, "queued": queue.pending() if queue is not None else 0}
+    if not ok:
+        body["detail"] = "the graders are warming up (they load the problems and derive their references)"
+    return JSONResponse(body, status_code=200 if ok else 503, headers={} if ok else {"Retry-After": "1"})
