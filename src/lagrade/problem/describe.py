@@ -3,7 +3,7 @@ and what the course server's page shows (the same text, from one place)."""
 
 from __future__ import annotations
 
-from lagrade.problem.spec import KINDS, Problem
+from lagrade.problem.spec import KINDS, GeneralFunction, Problem
 
 
 def show_text(p: Problem) -> str:
@@ -29,7 +29,7 @@ def show_text(p: Problem) -> str:
             out.append(f"  parameter {q.name:<10} {q.description}{' (> 0)' if q.positive else ''}")
         for f in s.functions:  # left general by the book: answers may call it, or use the stated one
             out.append(f"  function  {f.name}({', '.join(f.args)}): {f.description or 'a general function'}; "
-                       f"general, or {f.name} = {f.concrete}")
+                       f"{special_cases(f)}")
         out.append(f"  effects: {', '.join(s.effects) or 'none'}")
         out.append("")
     out.append("Parts (bind these names in answer.py):")
@@ -61,6 +61,17 @@ def show_text(p: Problem) -> str:
     if typing:  # answer.toml and the course page are typed: the spellings before the first try
         out += ["", typing.replace("Typing an answer:", "Typing an answer (answer.toml, the course page):", 1)]
     return "\n".join(out)
+
+
+def special_cases(f: GeneralFunction) -> str:
+    """What an answer written for the stated function or for 0 earns: the promise the grader keeps
+    (`lagrade.verdicts.checkers.general`), said from the one field both read."""
+    cases = " or ".join(dict.fromkeys(f"{f.name} = {c}" for c in (f.concrete, "0")))
+    call = f"{f.name}({', '.join(f.args)})"
+    if f.special_case == "full":
+        return (f"general, or {cases}: an answer is checked for the one it states, and a right one earns "
+                "full marks")
+    return (f"the problem asks a general {call}; an answer right only for {cases} earns partial credit")
 
 
 def template_text(p: Problem) -> str:

@@ -220,6 +220,11 @@ class GeneralFunction(_Strict):
                                       "and the parameters (`k*r**2/2`); answers that do not use the "
                                       "function are graded with it")
     description: str = Field("", description="what it is, as `lagrade show` prints it")
+    special_case: Literal["full", "partial"] = Field(
+        "partial", description="what an answer written for the `concrete` function or for 0 (not the general one) "
+                               "earns when right for it: `full` where the book names no force (the answer is "
+                               "checked for the force it states), `partial` where the book asks the general one; "
+                               "`lagrade show` says which")
 
 
 class Figure(_Strict):

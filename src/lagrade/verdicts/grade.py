@@ -333,12 +333,17 @@ class Formulations:
         return graded_part, own, system
 
     def _first_right(self, forms, value, follows: str | None) -> tuple[PartResult, bool, str | None]:
-        """The verdict in the first formulation the value is right in; else the primary's, or, when the
-        primary cannot even read it (names of another formulation), the first formulation that can."""
-        fallback, own_all, approximate = None, True, None
+        """The verdict in the first formulation the value is right in; else the first it is right in for
+        a special case of a general function only (partial, and the formulation a following part is
+        judged in); else the primary's, or, when the primary cannot even read it (names of another
+        formulation), the first formulation that can."""
+        fallback, own_all, approximate, special = None, True, None, None
         for form, words, gauge in forms:
             graded_part, own = _check(self.ctx, form, value, gauge)
             own_all = own_all and own
+            if graded_part._special_case:  # right for a special case in this formulation: keep looking for a
+                special = special or (graded_part, form.system)  # fully right one, else it is the formulation
+                continue
             share = self.credit.get(id(form), (1.0, None))[0]
             if graded_part.verdict == "correct" and share < 1:  # right only as an approximation: a share
                 if approximate is None:
@@ -356,6 +361,8 @@ class Formulations:
                 if fallback is not None and words:
                     graded_part.feedback += f" (Read in this formulation: {words}.)"
                 fallback = graded_part
+        if special is not None:
+            return special[0], own_all, special[1]
         return approximate or fallback, own_all, None
 
 
