@@ -45,13 +45,17 @@ def show_text(p: Problem) -> str:
             detail += "; linearized about equilibrium"
         if part.symbols:
             detail += f"; may use {', '.join(part.symbols)}"
-        others = [a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
-                  or p.system(a.system if a.system is not None else part.system).title or "another reading"
+        others = [(a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
+                   or p.system(a.system if a.system is not None else part.system).title or "another reading")
+                  + (f", for {a.credit:.0%} of the part" if a.credit < 1 else "")
                   for a in part.alternatives]
         if others and part.follows is None:  # never a reference value: the formulations' words only
             detail += f"; also accepted: {'; '.join(others)}"
         if part.follows:
             detail += f"; judged for the formulation of your {part.follows}"
+        if part.also_answered_by:
+            detail += (f"; a motion at these numbers bound to {' or '.join(part.also_answered_by)} is graded "
+                       f"as {part.name}")
         if part.version_of and part.version_of in (part.name, *part.aliases):
             others = [v.name for v in p.versions(part.version_of) if v is not part]
             detail += (f"; one version of {part.version_of}, with {', '.join(others)}: both are graded, and a value "

@@ -365,6 +365,10 @@ class Part(_Strict):
                           "(ex12.6's L in theta and in y): the name they share. A value bound to that name is "
                           "graded as the version whose system's coordinates it uses (else the version that "
                           "has the name as name or alias); the other version is then missing")
+    also_answered_by: list[Annotated[str, Field(pattern=IDENT)]] = Field(
+        [], description="numerical_solution: other parts whose value is graded as this part when it is a motion "
+                        "at this part's numbers (a table, or expressions in t and the parameters alone) and this part is not "
+                        "answered itself (12.41's exact pendulum motion bound to the catalogue's `solution_b`)")
     extra: bool = Field(False, description="a part the book does not ask: graded and shown, but not counted in "
                                            "the problem's total unless an assignment's `parts` names it")
 
@@ -452,6 +456,11 @@ class Problem(_Strict):
                                                 or sum(part.version_of in (p.name, *p.aliases) for p in versions) != 1):
                 raise ValueError(f"part '{part.name}': the versions of '{part.version_of}' must be two or more parts "
                                  f"on distinct systems, exactly one of them named or aliased '{part.version_of}'")
+            others = {p.name for p in self.parts if p is not part}
+            if part.also_answered_by and (part.kind != "numerical_solution"
+                                          or not set(part.also_answered_by) <= others):
+                raise ValueError(f"part '{part.name}': also_answered_by is for a numerical_solution part and names "
+                                 f"other parts of the problem, not {part.also_answered_by}")
             earlier = [p.name for p in self.parts[:self.parts.index(part)]]
             if part.follows is not None and part.follows not in earlier:
                 raise ValueError(f"part '{part.name}' follows '{part.follows}', which is not an earlier part")

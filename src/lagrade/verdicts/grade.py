@@ -16,6 +16,7 @@ import threading
 import traceback
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -208,6 +209,7 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
     ctx = Context(problem, references(problem), ACCURACY[accuracy], hints=hints, credit=credit or Credit())
     asked = [part for part in problem.parts if not only or part.name in only]
     parts: list[PartResult] = []
+    answer, moved = _motions_bound_elsewhere(ctx, answer)
     used = Formulations(ctx, answer)
     try:
         with cpu_time_bound(grading_seconds):
@@ -215,6 +217,11 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
                 parts.append(_ungradable(part, answer) or used.grade(part, answer.values[part.name], read_as, memo))
     except GradingOutOfTime as exc:
         parts += [_ungradable(part, answer) or _unusable(part, "invalid", str(exc)) for part in asked[len(parts):]]
+    for graded_part in parts:  # say where a moved value went, on both parts
+        for target, source in moved.items():
+            if graded_part.part in (target, source):
+                graded_part.feedback = (f"{graded_part.feedback.rstrip()} (Your {source} is a motion at {target}'s "
+                                        f"numbers, so it is graded as {target}.)")
     extras = {part.name for part in asked if part.extra}
     for graded_part in parts:
         graded_part.extra = graded_part.part in extras
@@ -222,6 +229,27 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
     return CheckResult(problem=problem.id, score=round(sum(p.score for p in counted), 6),
                        max_score=sum(p.max_score for p in counted), parts=parts,
                        problems=[str(p) for p in answer.problems])
+
+
+def _motions_bound_elsewhere(ctx, answer: LoadedAnswer) -> tuple[LoadedAnswer, dict[str, str]]:
+    """The answer with a motion at a numerical_solution part's numbers, bound to a part that part is
+    ``also_answered_by`` (12.41's catalogue name ``solution_b``), graded as that part when it has no
+    value of its own; and which moved (part -> the name it was bound to). The caller's answer is kept."""
+    from lagrade.verdicts.checkers.numerical import reads_as_motion
+
+    moved: dict[str, str] = {}
+    for part in ctx.problem.parts:
+        for source in part.also_answered_by:
+            if part.name in answer.values or part.name in answer.part_problems or source not in answer.values:
+                continue
+            if part.name not in moved and reads_as_motion(ctx, part, answer.values[source]):
+                moved[part.name] = source
+    if not moved:
+        return answer, moved
+    values = dict(answer.values)
+    for target, source in moved.items():
+        values[target] = values.pop(source)
+    return replace(answer, values=values, routed={**answer.routed, **moved}), moved
 
 
 def _ungradable(part, answer: LoadedAnswer) -> PartResult | None:
