@@ -45,6 +45,8 @@ def show_text(p: Problem) -> str:
             detail += "; linearized about equilibrium"
         if part.symbols:
             detail += f"; may use {', '.join(part.symbols)}"
+        if part.accelerations:
+            detail += "; may use the accelerations q'', evaluated on the true motion"
         others = [(a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
                    or p.system(a.system if a.system is not None else part.system).title or "another reading")
                   + (f", for {a.credit:.0%} of the part" if a.credit < 1 else "")

@@ -350,8 +350,9 @@ class Part(_Strict):
         {}, description="another sampling range for some of `symbols`: an initial position or velocity "
                         "that may be negative, [-1.5, 1.5]")
     initial: dict[str, str] = Field({}, description="trajectory: initial values, keyed q and q_d")
-    accelerations: bool = Field(False, description="expression parts: the answer may contain q'' (the part asks a "
-                                "relation between accelerations); otherwise a result with q'' in it is invalid")
+    accelerations: bool = Field(False, description="expression parts: the answer may contain q'', evaluated on the "
+                                "true motion (the solved accelerations are put for it; `lagrade show` says so); "
+                                "otherwise a result with q'' in it is invalid")
     aliases: list[str] = Field([], description="other names an answer may bind for this part")
     mistakes: list[Mistake] = Field([], description="known wrong answers, each with its sentence")
     alternatives: list[Alternative] = Field(
