@@ -78,7 +78,7 @@ KINDS: dict[str, Kind] = {
         "the reference value satisfies the equation (and it is not an identity)", 'text; `unknown = "theta"`'),
     "boolean": Kind("True or False", "equal", "`true` / `false`"),
     "integer": Kind("a whole number", "equal", "int"),
-    "names": Kind("list of coordinate names (strings) or coordinates", "same set", "list of names"),
+    "names": Kind("list of coordinate names (strings) or coordinates ([] for none)", "same set", "list of names"),
     "conserved": Kind(
         "list of expressions constant along the motion (momenta may be written p_<q>)",
         "each is conserved along the scene's motion, and together they cover the reference quantities "
