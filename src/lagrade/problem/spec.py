@@ -368,8 +368,9 @@ class Part(_Strict):
                           "has the name as name or alias); the other version is then missing")
     also_answered_by: list[Annotated[str, Field(pattern=IDENT)]] = Field(
         [], description="numerical_solution: other parts whose value is graded as this part when it is a motion "
-                        "at this part's numbers (a table, or expressions in t and the parameters alone) and this part is not "
-                        "answered itself (12.41's exact pendulum motion bound to the catalogue's `solution_b`)")
+                        "at this part's numbers (a table, or expressions in t and the parameters alone) and this "
+                        "part is not answered itself (12.41's exact pendulum motion bound to the catalogue's "
+                        "`solution_b`)")
     extra: bool = Field(False, description="a part the book does not ask: graded and shown, but not counted in "
                                            "the problem's total unless an assignment's `parts` names it")
 
