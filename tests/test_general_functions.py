@@ -249,8 +249,14 @@ SPECIAL, GENERAL = _special_cases()
 
 
 @pytest.mark.parametrize("pid, part, value, case", SPECIAL, ids=[f"{p}-{n}-{c}" for p, n, _, c in SPECIAL])
-def test_a_special_case_is_partial_with_a_note(pid, part, value, case):
+def test_a_special_case_earns_what_the_statement_promises(pid, part, value, case):
+    """Issue 44: where the book names no force (12.26, 12.36) the answer is checked for the force it
+    states, and right is right; where it names a general one (12.39) a special case is partial, with a note."""
     graded = {p.part: p for p in check(pid, grading_seconds=math.inf, **{part: value}).parts}[part]
+    if pid in ("12.26", "12.36"):
+        assert graded.verdict == "correct" and graded.score == graded.max_score, graded.feedback
+        assert f"Checked for the force your answer states ({case})" in graded.feedback
+        return
     assert graded.verdict == "partial" and 0 < graded.score < graded.max_score, graded.feedback
     assert f"Right for {case}" in graded.feedback and "asks for a general" in graded.feedback
 

@@ -2,7 +2,7 @@
 
 Inertial position R = xp e1' + yp e2' with de1'/dt = omega e2', de2'/dt = -omega e1', so the inertial
 velocity has components (xp' - omega yp, yp' + omega xp) along the rotating axes. Real force: the book's
-general potential U(xp, yp) (the problem's concrete one, U = k r^2/2, in tests/answers/12.26/correct_expanded.py).
+general potential U(xp, yp) (the problem's concrete one, U = k r^2/2, in tests/answers/12.26/correct_special_case_expanded.py).
 L = m/2 [(xp' - omega yp)^2 + (yp' + omega xp)^2] - U(xp, yp)
 Lagrange:  m xp'' = -dU/dxp + 2 m omega yp' + m omega^2 xp
            m yp'' = -dU/dyp - 2 m omega xp' + m omega^2 yp

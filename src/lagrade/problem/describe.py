@@ -4,7 +4,7 @@ and what the course server's page shows (the same text, from one place)."""
 from __future__ import annotations
 
 from lagrade.problem.domains import words
-from lagrade.problem.spec import KINDS, Problem
+from lagrade.problem.spec import KINDS, GeneralFunction, Problem
 
 
 def show_text(p: Problem) -> str:
@@ -30,7 +30,7 @@ def show_text(p: Problem) -> str:
             out.append(f"  parameter {q.name:<10} {q.description}{' (> 0)' if q.positive else ''}")
         for f in s.functions:  # left general by the book: answers may call it, or use the stated one
             out.append(f"  function  {f.name}({', '.join(f.args)}): {f.description or 'a general function'}; "
-                       f"general, or {f.name} = {f.concrete}")
+                       f"{special_cases(f)}")
         out.append(f"  effects: {', '.join(s.effects) or 'none'}")
         out.append("")
     for s in p.systems:  # where each symbol lives: what an answer may rely on (sqrt(m**2) is m)
@@ -49,13 +49,19 @@ def show_text(p: Problem) -> str:
             detail += "; linearized about equilibrium"
         if part.symbols:
             detail += f"; may use {', '.join(part.symbols)}"
-        others = [a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
-                  or p.system(a.system if a.system is not None else part.system).title or "another reading"
+        if part.accelerations:
+            detail += "; may use the accelerations q'', evaluated on the true motion"
+        others = [(a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
+                   or p.system(a.system if a.system is not None else part.system).title or "another reading")
+                  + (f", for {a.credit:.0%} of the part" if a.credit < 1 else "")
                   for a in part.alternatives]
         if others and part.follows is None:  # never a reference value: the formulations' words only
             detail += f"; also accepted: {'; '.join(others)}"
         if part.follows:
             detail += f"; judged for the formulation of your {part.follows}"
+        if part.also_answered_by:
+            detail += (f"; a motion at these numbers bound to {' or '.join(part.also_answered_by)} is graded "
+                       f"as {part.name}")
         if part.version_of and part.version_of in (part.name, *part.aliases):
             others = [v.name for v in p.versions(part.version_of) if v is not part]
             detail += (f"; one version of {part.version_of}, with {', '.join(others)}: both are graded, and a value "
@@ -73,6 +79,17 @@ def domain_text(p: Problem, key: str = "") -> str:
     holds for a while only: ``0 <= t < pi/(2*omega)``)."""
     return words(d for d in p.domains(key).values() if d.role in ("parameter", "coordinate", "velocity")
                  or (d.role == "time" and d.bounds.text != "real"))  # a scene that holds for a while only
+
+
+def special_cases(f: GeneralFunction) -> str:
+    """What an answer written for the stated function or for 0 earns: the promise the grader keeps
+    (`lagrade.verdicts.checkers.general`), said from the one field both read."""
+    cases = " or ".join(dict.fromkeys(f"{f.name} = {c}" for c in (f.concrete, "0")))
+    call = f"{f.name}({', '.join(f.args)})"
+    if f.special_case == "full":
+        return (f"general, or {cases}: an answer is checked for the one it states, and a right one earns "
+                "full marks")
+    return (f"the problem asks a general {call}; an answer right only for {cases} earns partial credit")
 
 
 def template_text(p: Problem) -> str:

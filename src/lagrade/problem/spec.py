@@ -82,7 +82,7 @@ KINDS: dict[str, Kind] = {
         "the reference value satisfies the equation (and it is not an identity)", 'text; `unknown = "theta"`'),
     "boolean": Kind("True or False", "equal", "`true` / `false`"),
     "integer": Kind("a whole number", "equal", "int"),
-    "names": Kind("list of coordinate names (strings) or coordinates", "same set", "list of names"),
+    "names": Kind("list of coordinate names (strings) or coordinates ([] for none)", "same set", "list of names"),
     "conserved": Kind(
         "list of expressions constant along the motion (momenta may be written p_<q>)",
         "each is conserved along the scene's motion, and together they cover the reference quantities "
@@ -273,6 +273,11 @@ class GeneralFunction(_Strict):
                                       "and the parameters (`k*r**2/2`); answers that do not use the "
                                       "function are graded with it")
     description: str = Field("", description="what it is, as `lagrade show` prints it")
+    special_case: Literal["full", "partial"] = Field(
+        "partial", description="what an answer written for the `concrete` function or for 0 (not the general one) "
+                               "earns when right for it: `full` where the book names no force (the answer is "
+                               "checked for the force it states), `partial` where the book asks the general one; "
+                               "`lagrade show` says which")
 
 
 class Figure(_Strict):
@@ -405,8 +410,9 @@ class Part(_Strict):
         {}, description="the physical domain of some of `symbols`, written as a parameter's `domain` (`{ v0 = "
                         "\"positive\" }`); the others are real. Their sampling ranges must lie inside")
     initial: dict[str, str] = Field({}, description="trajectory: initial values, keyed q and q_d")
-    accelerations: bool = Field(False, description="expression parts: the answer may contain q'' (the part asks a "
-                                "relation between accelerations); otherwise a result with q'' in it is invalid")
+    accelerations: bool = Field(False, description="expression parts: the answer may contain q'', evaluated on the "
+                                "true motion (the solved accelerations are put for it; `lagrade show` says so); "
+                                "otherwise a result with q'' in it is invalid")
     aliases: list[str] = Field([], description="other names an answer may bind for this part")
     mistakes: list[Mistake] = Field([], description="known wrong answers, each with its sentence")
     alternatives: list[Alternative] = Field(
@@ -420,6 +426,11 @@ class Part(_Strict):
                           "(ex12.6's L in theta and in y): the name they share. A value bound to that name is "
                           "graded as the version whose system's coordinates it uses (else the version that "
                           "has the name as name or alias); the other version is then missing")
+    also_answered_by: list[Annotated[str, Field(pattern=IDENT)]] = Field(
+        [], description="numerical_solution: other parts whose value is graded as this part when it is a motion "
+                        "at this part's numbers (a table, or expressions in t and the parameters alone) and this "
+                        "part is not answered itself (12.41's exact pendulum motion bound to the catalogue's "
+                        "`solution_b`)")
     extra: bool = Field(False, description="a part the book does not ask: graded and shown, but not counted in "
                                            "the problem's total unless an assignment's `parts` names it")
 
@@ -512,6 +523,11 @@ class Problem(_Strict):
                                                 or sum(part.version_of in (p.name, *p.aliases) for p in versions) != 1):
                 raise ValueError(f"part '{part.name}': the versions of '{part.version_of}' must be two or more parts "
                                  f"on distinct systems, exactly one of them named or aliased '{part.version_of}'")
+            others = {p.name for p in self.parts if p is not part}
+            if part.also_answered_by and (part.kind != "numerical_solution"
+                                          or not set(part.also_answered_by) <= others):
+                raise ValueError(f"part '{part.name}': also_answered_by is for a numerical_solution part and names "
+                                 f"other parts of the problem, not {part.also_answered_by}")
             earlier = [p.name for p in self.parts[:self.parts.index(part)]]
             if part.follows is not None and part.follows not in earlier:
                 raise ValueError(f"part '{part.name}' follows '{part.follows}', which is not an earlier part")

@@ -16,6 +16,7 @@ import threading
 import traceback
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -208,6 +209,7 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
     ctx = Context(problem, references(problem), ACCURACY[accuracy], hints=hints, credit=credit or Credit())
     asked = [part for part in problem.parts if not only or part.name in only]
     parts: list[PartResult] = []
+    answer, moved = _motions_bound_elsewhere(ctx, answer)
     used = Formulations(ctx, answer)
     try:
         with cpu_time_bound(grading_seconds):
@@ -215,6 +217,11 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
                 parts.append(_ungradable(part, answer) or used.grade(part, answer.values[part.name], read_as, memo))
     except GradingOutOfTime as exc:
         parts += [_ungradable(part, answer) or _unusable(part, "invalid", str(exc)) for part in asked[len(parts):]]
+    for graded_part in parts:  # say where a moved value went, on both parts
+        for target, source in moved.items():
+            if graded_part.part in (target, source):
+                graded_part.feedback = (f"{graded_part.feedback.rstrip()} (Your {source} is a motion at {target}'s "
+                                        f"numbers, so it is graded as {target}.)")
     extras = {part.name for part in asked if part.extra}
     for graded_part in parts:
         graded_part.extra = graded_part.part in extras
@@ -222,6 +229,27 @@ def grade_values(problem: Problem, answer: LoadedAnswer, accuracy: str = "defaul
     return CheckResult(problem=problem.id, score=round(sum(p.score for p in counted), 6),
                        max_score=sum(p.max_score for p in counted), parts=parts,
                        problems=[str(p) for p in answer.problems])
+
+
+def _motions_bound_elsewhere(ctx, answer: LoadedAnswer) -> tuple[LoadedAnswer, dict[str, str]]:
+    """The answer with a motion at a numerical_solution part's numbers, bound to a part that part is
+    ``also_answered_by`` (12.41's catalogue name ``solution_b``), graded as that part when it has no
+    value of its own; and which moved (part -> the name it was bound to). The caller's answer is kept."""
+    from lagrade.verdicts.checkers.numerical import reads_as_motion
+
+    moved: dict[str, str] = {}
+    for part in ctx.problem.parts:
+        for source in part.also_answered_by:
+            if part.name in answer.values or part.name in answer.part_problems or source not in answer.values:
+                continue
+            if part.name not in moved and reads_as_motion(ctx, part, answer.values[source]):
+                moved[part.name] = source
+    if not moved:
+        return answer, moved
+    values = dict(answer.values)
+    for target, source in moved.items():
+        values[target] = values.pop(source)
+    return replace(answer, values=values, routed={**answer.routed, **moved}), moved
 
 
 def _ungradable(part, answer: LoadedAnswer) -> PartResult | None:
@@ -333,12 +361,17 @@ class Formulations:
         return graded_part, own, system
 
     def _first_right(self, forms, value, follows: str | None) -> tuple[PartResult, bool, str | None]:
-        """The verdict in the first formulation the value is right in; else the primary's, or, when the
-        primary cannot even read it (names of another formulation), the first formulation that can."""
-        fallback, own_all, approximate = None, True, None
+        """The verdict in the first formulation the value is right in; else the first it is right in for
+        a special case of a general function only (partial, and the formulation a following part is
+        judged in); else the primary's, or, when the primary cannot even read it (names of another
+        formulation), the first formulation that can."""
+        fallback, own_all, approximate, special = None, True, None, None
         for form, words, gauge in forms:
             graded_part, own = _check(self.ctx, form, value, gauge)
             own_all = own_all and own
+            if graded_part._special_case:  # right for a special case in this formulation: keep looking for a
+                special = special or (graded_part, form.system)  # fully right one, else it is the formulation
+                continue
             share = self.credit.get(id(form), (1.0, None))[0]
             if graded_part.verdict == "correct" and share < 1:  # right only as an approximation: a share
                 if approximate is None:
@@ -356,6 +389,8 @@ class Formulations:
                 if fallback is not None and words:
                     graded_part.feedback += f" (Read in this formulation: {words}.)"
                 fallback = graded_part
+        if special is not None:
+            return special[0], own_all, special[1]
         return approximate or fallback, own_all, None
 
 

@@ -55,6 +55,9 @@ class PartResult(BaseModel):
     #: the system key of the formulation the answer was right in (a part others follow), kept with
     #: the verdict in the memo; not serialized
     _formulation: str | None = PrivateAttr(default=None)
+    #: partial because right only for a special case of a function the book leaves general (12.39's
+    #: V = k*r**2/2): the formulation it is written in is still the one a following part is judged in
+    _special_case: bool = PrivateAttr(default=False)
 
 
 class CheckResult(BaseModel):

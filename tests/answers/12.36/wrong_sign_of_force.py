@@ -1,6 +1,6 @@
-# expect: H=partial, hamilton=partial, H_F=incorrect, hamilton_F=partial
-# A special case of the general function where the problem asks the general one (issue 33): H, hamilton, hamilton_F earn partial credit.
-# H_F and hamilton_F are extras (the book asks a general V(x)): wrong, shown, not counted in the score (issue 33).
+# expect: H=correct, hamilton=correct, H_F=incorrect, hamilton_F=partial
+# H, hamilton for the free particle: the book names no force, right for the force stated (issue 44); hamilton_F partial.
+# H_F and hamilton_F are extras (the book asks no constant force): wrong, shown, not counted in the score (issue 33).
 # The potential of the force written +F x (sign of F = -dV/dx lost), and p' = +dH/dx.
 from lagrade.answer import *
 

@@ -119,6 +119,22 @@ def read_table(part: Part, mech: Mechanics, value: object) -> tuple[np.ndarray, 
     return {n: given[n] for n in names}
 
 
+def reads_as_motion(ctx: Context, part: Part, value: object) -> bool:
+    """Whether ``value`` (bound to another part) is a motion at ``part``'s numbers: a table, or
+    expressions in t and the parameters alone, with no symbol the other part's own answer needs
+    (12.41's theta0). What ``also_answered_by`` grades as ``part``: the exact pendulum motion written
+    under the catalogue's name ``solution_b``, while a symbolic small-angle solution stays there."""
+    mech = ctx.mech(part)
+    try:
+        got = read_table(part, mech, value)
+    except (InvalidAnswer, TypeError, ValueError):
+        return False
+    if not isinstance(got, dict):
+        return True
+    allowed = {"t", *(p.name for p in mech.parameters)}
+    return all(isinstance(e, sp.Basic) and {s.name for s in e.free_symbols} <= allowed for e in got.values())
+
+
 def _numbers(part: Part, mech: Mechanics) -> tuple[np.ndarray, np.ndarray, tuple[float, float]]:
     """The part's parameter values, initial state (q, q') and time window, from the problem file."""
     ref = part.reference if isinstance(part.reference, dict) else {}

@@ -114,7 +114,13 @@ def _read(ctx: Context, part: Part, mech: Mechanics, value: object) -> sp.Expr:
     if isinstance(expr, sp.Float) or (isinstance(expr, sp.Mul) and isinstance(-expr, sp.Float)):
         return expr  # a decimal, kept as typed: a pure number is judged to its digits (`exact.agrees_to_digits`)
     extra = [f"delta_{n}" for n in mech.all_names]
-    return read_sympy(expr, part, mech, plain_coordinates=True, momenta=True, extra=extra)
+    expr = read_sympy(expr, part, mech, plain_coordinates=True, momenta=True, extra=extra)
+    if part.accelerations and expr.free_symbols & {*mech.s.qdd, *mech.constrained}:
+        # the statement allows q'' (12.32's "theta'' may be used"): a value on the true motion, so the
+        # solved accelerations are put for q'' (the sampled points hold the same), and a proof sees them
+        solved = _symbolic_reference(expr, mech, ctx.symbolic_seconds)
+        return expr if solved is None else solved
+    return expr
 
 
 def _evaluate(expr: sp.Expr, pts: Points, syms: list[sp.Symbol] | None = None) -> np.ndarray:

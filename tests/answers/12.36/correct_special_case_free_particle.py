@@ -1,5 +1,5 @@
-# expect: H=partial, hamilton=partial, H_F=correct, hamilton_F=correct
-# A special case of the general function where the problem asks the general one (issue 33): H, hamilton earn partial credit.
+# expect: H=correct, hamilton=correct, H_F=correct, hamilton_F=correct
+# A special case where the book names no force (issue 44): checked for the force it states, H, hamilton earn full marks.
 # The free particle (V = 0), the case the problem states for answers without V(x).
 from sympy import Eq, Function, symbols
 

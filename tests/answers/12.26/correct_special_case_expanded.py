@@ -1,5 +1,5 @@
-# expect: L=partial, eom=partial, coriolis=correct, centrifugal=correct
-# A special case of the general function where the problem asks the general one (issue 33): L, eom earn partial credit.
+# expect: L=correct, eom=correct, coriolis=correct, centrifugal=correct
+# A special case where the book names no force (issue 44): checked for the force it states, L, eom earn full marks.
 # L expanded (T_rel + m*omega*(xp*yp' - yp*xp') + centrifugal term) plus d/dt(m*omega*xp*yp);
 # eom divided by m and moved to one side, in the other order.
 from lagrade.answer import *

@@ -1,5 +1,5 @@
-# expect: H=partial, hamilton=partial, H_F=correct, hamilton_F=correct
-# A special case of the general function where the problem asks the general one (issue 33): H, hamilton earn partial credit.
+# expect: H=correct, hamilton=correct, H_F=correct, hamilton_F=correct
+# A special case where the book names no force (issue 44): checked for the force it states, H, hamilton earn full marks.
 # Equivalent forms: momenta as plain symbols in H, H with a constant added, equations scaled and reordered.
 from lagrade.answer import *
 
