@@ -311,6 +311,10 @@ class Alternative(_Strict):
     the one used (`lagrade.verdicts.grade.Formulations`)."""
 
     system: str | None = Field(None, description="key of the system the part is graded in (default: the part's)")
+    name: Annotated[str, Field(pattern=IDENT)] | None = Field(
+        None, description="an alias of the part that selects this formulation: a value bound to that name is graded "
+                          "in it alone, a value bound to another of the part's names in the others (12.30: `lam`, the "
+                          "multiplier, a torque, answers the constraining force `N` asks)")
     reference: Any = Field(None, description="the right answer in this formulation (default: the part's), by kind")
     initial: dict[str, str] | None = Field(None, description="trajectory: initial values in this formulation "
                                                              "(default: the part's)")
@@ -378,6 +382,9 @@ class Part(_Strict):
         if self.domain is not None and not self.domain[0] < self.domain[1]:
             raise ValueError(f"part '{self.name}': domain must be [low, high] with low < high")
         for alt in self.alternatives:
+            if alt.name is not None and alt.name not in self.aliases:
+                raise ValueError(f"part '{self.name}': an alternative's name '{alt.name}' must be one of the part's "
+                                 f"aliases {self.aliases}")
             if alt.system is None and alt.reference is None and alt.initial is None and not alt.gauge:
                 raise ValueError(f"part '{self.name}': an alternative needs a system, a reference, initial values "
                                  f"or gauge = true")

@@ -46,6 +46,9 @@ class LoadedAnswer:
     stdout: str = ""
     #: versions of a two-version question answered by the shared name: part -> that name
     routed: dict[str, str] = field(default_factory=dict)
+    #: the name each part's value was bound to (its own or an alias): an alternative may be selected by
+    #: its alias (`Alternative.name`)
+    bound_as: dict[str, str] = field(default_factory=dict)
 
 
 def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
@@ -216,7 +219,19 @@ def _bind_values(out: LoadedAnswer, raw: dict, problems: list, path: Path, probl
                 out.part_problems.setdefault(part, refused)
                 continue
             if name not in shared:
+                if part in out.values and out.bound_as.get(part, name) != name:
+                    # two names of one part (an alias and the name, 12.30's lam and N): the part's own name
+                    # wins, as a version's own name wins over the shared one; else the first bound
+                    graded, ignored = (name, out.bound_as[part]) if name == part else (out.bound_as[part], name)
+                    out.problems.append(AnswerProblem(
+                        file=path.name, line=None, message=f"'{ignored}' and '{graded}' answer the same part "
+                        f"{part}: '{graded}' is graded, '{ignored}' ignored"))
+                    if name != part:
+                        continue
+                    out.values[part], out.bound_as[part] = value, name
+                    continue
                 out.values.setdefault(part, value)
+                out.bound_as.setdefault(part, name)
         elif path.suffix == ".toml":
             out.problems.append(AnswerProblem(file=str(path), line=None,
                                               message=f"'{name}' is not a part of problem {problem.id}; ignored"))
