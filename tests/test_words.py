@@ -27,7 +27,7 @@ def test_feedback_levels():
     assert at_level(said, "incorrect", "hints") == said
     assert at_level(said, "incorrect", "named") == "Incorrect: the equation for theta1 is wrong. The motion blows up."
     assert at_level(said, "incorrect", "verdict") == "Incorrect."
-    assert at_level("no value bound to 'L'", "missing", "verdict") == "no value bound to 'L'"  # what to fix stays
+    assert at_level("not answered: no value for 'L'", "missing", "verdict") == "not answered: no value for 'L'"  # kept
 
 
 def test_lagrade_check_says_it_in_words_and_json_keeps_the_settings():

@@ -450,10 +450,14 @@ class Problem(_Strict):
                 if alt.system is not None and part.linearized and not self.system(alt.system).equilibrium:
                     raise ValueError(f"part '{part.name}' is linearized but system '{alt.system}' has no equilibrium")
             versions = [p for p in self.parts if part.version_of is not None and p.version_of == part.version_of]
-            if part.version_of is not None and (len(versions) < 2 or len({p.system for p in versions}) < len(versions)
+            # distinct formulations: the systems a version is graded in (its own and its alternatives'); 12.39's
+            # H (either frame) and H_p (the rotating frame's) share a system but not a formulation
+            formulations = {frozenset({p.system, *(a.system for a in p.alternatives if a.system)}) for p in versions}
+            if part.version_of is not None and (len(versions) < 2 or len(formulations) < len(versions)
                                                 or sum(part.version_of in (p.name, *p.aliases) for p in versions) != 1):
                 raise ValueError(f"part '{part.name}': the versions of '{part.version_of}' must be two or more parts "
-                                 f"on distinct systems, exactly one of them named or aliased '{part.version_of}'")
+                                 f"graded in distinct systems, exactly one of them named or aliased "
+                                 f"'{part.version_of}'")
             earlier = [p.name for p in self.parts[:self.parts.index(part)]]
             if part.follows is not None and part.follows not in earlier:
                 raise ValueError(f"part '{part.name}' follows '{part.follows}', which is not an earlier part")

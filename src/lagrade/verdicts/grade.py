@@ -231,19 +231,20 @@ def _ungradable(part, answer: LoadedAnswer) -> PartResult | None:
     if part.name not in answer.values:
         if answer.fatal is not None:
             return _unusable(part, "invalid", f"{NOT_GRADED}{answer.fatal}")
-        return _unusable(part, "missing", f"no value bound to '{part.name}'{_other_version(part, answer)}")
+        return _unusable(part, "missing", f"not answered: no value for '{part.name}'{_other_version(part, answer)}")
     return None
 
 
 def _other_version(part, answer: LoadedAnswer) -> str:
-    """For a missing version of a two-version question: where the shared name's value went instead."""
+    """For a missing version of a two-version question: where the shared name's value went instead, and
+    in any case that the problem asks both versions (every two-version id says it alike)."""
     if part.version_of is None:
         return ""
     for graded_as, name in answer.routed.items():
         if name == part.version_of and graded_as != part.name:
             return (f" (your {name} is written in the other version's coordinates and is graded as {graded_as}; "
                     f"the problem asks both versions)")
-    return ""
+    return f" (the problem asks both versions of {part.version_of}: this one is {part.name})"
 
 
 class Formulations:
