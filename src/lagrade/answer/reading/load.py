@@ -166,8 +166,17 @@ def no_expected_name(path: Path, problem: Problem) -> str:
     import difflib
 
     expected = list(answer_names(problem))
+    # the problem's own symbols (a template's `m, l1 = parameters(...)`, its coordinates and momenta) are
+    # not attempts at an answer name: no "did you mean 'L' for 'l1'"
+    coords = {c.name for s in problem.systems for c in s.coordinates}
+    own = {q.name for s in problem.systems for q in problem.parameters_of(s.key)} | coords \
+        | {f"p_{c}" for c in coords} | {f.name for s in problem.systems for f in s.functions} \
+        | {c.multiplier for s in problem.systems for c in s.constraints if c.multiplier} \
+        | {sym for part in problem.parts for sym in part.symbols}
     hints = []
     for name in bound_names(path):
+        if name in own:  # ex12.4's parameter a is also its part's name: bound as the symbol, not an answer
+            continue
         guess = USUAL_WORDS.get(name.lower())
         if guess not in expected:
             close = difflib.get_close_matches(name, expected, n=1, cutoff=0.6) or \
