@@ -1,6 +1,6 @@
-"""Numbers the docs state about the code are the code's (issue 44): the accuracy presets' tolerances,
-read from `lagrade.compare.trajectory.ACCURACY`, and no hard-coded test counts for the tiers (pytest
-selects them; a count in prose only drifts)."""
+"""What the docs state about the code is the code's (issue 44): the accuracy presets' tolerances, read
+from `lagrade.compare.trajectory.ACCURACY`; no hard-coded test counts for the tiers (pytest selects them;
+a count in prose only drifts); export lines that run as written; a README in its readers' words."""
 
 from __future__ import annotations
 
@@ -55,3 +55,27 @@ def test_the_tiers_test_counts_are_not_written_down():
         for line in page.read_text().splitlines():
             if re.search(r"`pytest`|`pytest -m slow`", line):  # the tiers' own commands
                 assert not re.search(r"\b\d{3,5} tests\b", line), f"{page.name}: {line[:120]}"
+
+
+def test_an_export_line_gives_what_its_format_needs():
+    """`--format gradescope` needs `--student` (with several students), `--format html` a folder (`-o`):
+    a docs line that shows or invites those formats shows them with what they need (issue 44: "also csv,
+    gradescope, html" after a canvas line did not)."""
+    needs = {"gradescope": "--student", "html": "-o"}
+    for page in [ROOT / "README.md", *DOCS.glob("*.md")]:
+        for line in page.read_text().splitlines():
+            if not line.startswith("lagrade export"):
+                continue
+            for fmt, option in needs.items():
+                if re.search(rf"\b{fmt}\b", line):
+                    assert f"--format {fmt}" in line and option in line.split("#")[0], f"{page.name}: {line}"
+
+
+#: the project's own words for its parts, which a student or instructor reading the README does not know
+INTERNAL = ("zygote", "red team", "redteam", "oracle", "tripwire", "seccomp", "landlock", "xreplace", "lambdify")
+
+
+def test_the_readme_is_in_its_readers_words():
+    text = (ROOT / "README.md").read_text().lower()
+    assert [w for w in INTERNAL if w in text] == []
+    assert len(text.splitlines()) <= 170, "a README read in five minutes: move details to docs/"
