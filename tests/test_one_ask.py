@@ -73,3 +73,9 @@ def test_an_alternatives_name_is_an_alias_of_its_part():
         Part(name="N", kind="expression", reference="lam/r", alternatives=[{"name": "lam", "reference": "lam"}])
     Part(name="N", kind="expression", reference="lam/r", aliases=["lam"],
          alternatives=[{"name": "lam", "reference": "lam"}])
+
+
+def test_show_says_which_name_selects_the_formulation():
+    from lagrade.problem.describe import show_text
+
+    assert "also accepted: bound to lam, the multiplier lam" in " ".join(show_text(load_problem("12.30")).split())

@@ -45,8 +45,9 @@ def show_text(p: Problem) -> str:
             detail += "; linearized about equilibrium"
         if part.symbols:
             detail += f"; may use {', '.join(part.symbols)}"
-        others = [a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
-                  or p.system(a.system if a.system is not None else part.system).title or "another reading"
+        others = [(f"bound to {a.name}, " if a.name else "")
+                  + (a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
+                     or p.system(a.system if a.system is not None else part.system).title or "another reading")
                   for a in part.alternatives]
         if others and part.follows is None:  # never a reference value: the formulations' words only
             detail += f"; also accepted: {'; '.join(others)}"
