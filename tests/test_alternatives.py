@@ -226,7 +226,9 @@ def test_a_named_mistake_of_an_alternative_is_recognised_in_its_formulation(pid,
     alt = part.alternatives[i]
     in_alt = part.model_copy(update={"system": alt.system if alt.system is not None else part.system})
     value = _as_answer(problem, in_alt, alt.mistakes[k].answer)
-    graded = grade_values(problem, LoadedAnswer(values={part.name: value}), only=[part.name]).parts[0]
+    # an alternative selected by its alias (12.30's lam) is graded when the value is bound to that name
+    bound = LoadedAnswer(values={part.name: value}, bound_as={part.name: alt.name or part.name})
+    graded = grade_values(problem, bound, only=[part.name]).parts[0]
     assert graded.verdict != "correct", graded.feedback
     assert alt.mistakes[k].message in graded.feedback, graded.feedback
     assert reveals(pid, graded.feedback) == []

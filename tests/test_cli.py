@@ -59,6 +59,47 @@ def test_template_is_a_valid_answer_file_with_every_part_missing(tmp_path):
     assert [p["part"] for p in data["parts"]] == ["L", "H", "cyclic", "conserved", "eom_reduced", "omega"]
 
 
+def _declared(template: str) -> list[str]:
+    """The names a template's top-level assignments declare, in order (repeats kept)."""
+    import ast
+
+    return [leaf.id for node in ast.parse(template).body if isinstance(node, ast.Assign)
+            for target in node.targets for leaf in ast.walk(target) if isinstance(leaf, ast.Name)]
+
+
+def test_no_template_declares_a_name_twice():
+    """12.41's (b) and (b_small) share theta: a template declares it once, not once per system."""
+    from lagrade.problem.describe import template_text
+    from lagrade.problem.library import load_problem, problem_ids
+
+    twice = {}
+    for pid in problem_ids():
+        names = _declared(template_text(load_problem(pid)))
+        if len(names) != len(set(names)):
+            twice[pid] = sorted({n for n in names if names.count(n) > 1})
+    assert twice == {}
+
+
+def test_an_unfilled_template_gets_no_did_you_mean(tmp_path):
+    """An unfilled template binds only the problem's own symbols: nothing to guess an answer name from
+    ("did you mean 'L' for 'l1'" was nonsense); a real misnaming still gets its guess."""
+    from lagrade.answer.reading.load import no_expected_name
+    from lagrade.problem.describe import template_text
+    from lagrade.problem.library import load_problem, problem_ids
+
+    path = tmp_path / "answer.py"
+    guessed = {}
+    for pid in problem_ids():
+        problem = load_problem(pid)
+        path.write_text(template_text(problem))
+        said = no_expected_name(path, problem)
+        if "did you mean" in said:
+            guessed[pid] = said
+    assert guessed == {}
+    path.write_text(template_text(load_problem("12.22")) + "lagrangian = 0\n")
+    assert "did you mean 'L' for 'lagrangian'" in no_expected_name(path, load_problem("12.22"))
+
+
 def test_check_reference_exit_0_and_json_shape():
     code, out = run("check", "12.43", str(REF / "12.43" / "answer.py"), "--json")
     assert code == 0

@@ -123,9 +123,14 @@ def test_a_toml_block_is_valid(block):
         LtiConfig.model_validate(data)
     elif "problems" in data or "gradescope" in data:  # an assignment, or a table of one
         Assignment.model_validate({"name": "hw7", "problems": [{"id": "12.22"}], **data})
-    elif "systems" in data:
-        for function in data["systems"]["functions"]:
-            GeneralFunction.model_validate(function)
+    elif "systems" in data:  # a piece of a system: its functions, coordinates or constraints
+        from lagrade.problem.spec import Constraint, Coordinate
+
+        pieces = {"functions": GeneralFunction, "coordinates": Coordinate, "constraints": Constraint}
+        assert set(data["systems"]) <= set(pieces), f"{block}: no model reads {sorted(data['systems'])}"
+        for key, model in pieces.items():
+            for piece in data["systems"].get(key, []):
+                model.model_validate(piece)
     else:
         assert "parts" in data, f"{block}: no model reads this block"
         for part in data["parts"]:

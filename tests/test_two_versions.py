@@ -163,3 +163,41 @@ def test_a_shared_name_is_read_by_its_coordinates():
     assert version_for(problem, "Q", {"l1": 1}, taken={"Q_b"}) is None  # bound by its own name: that wins
     six = load_problem("12.6")
     assert version_for(six, "dW", sp.Symbol("delta_s") * sp.sin(sp.Function("theta")(t))) == "dW_a"
+
+
+# --- two versions everywhere alike (issue 44 item 7) -------------------------------------------------
+
+
+def test_1230_cartesian_equations_bound_to_eom_are_the_cartesian_version():
+    """12.30 asks the equations in both Cartesian and polar coordinates: Cartesian ones bound to the
+    catalogue's `eom` are graded as eom_xy (not refused with a derivative message), and the polar
+    version is missing with the note every two-version id gives."""
+    m, omega = sp.symbols("m omega", positive=True)
+    x, y = sp.Function("x")(t), sp.Function("y")(t)
+    along_the_wire = m * (x.diff(t, 2) * sp.cos(omega * t) + y.diff(t, 2) * sp.sin(omega * t))
+    got = {p.part: p for p in lagrade.check("12.30", eom=[along_the_wire, x * sp.sin(omega * t) - y * sp.cos(omega * t)]).parts}
+    assert got["eom_xy"].verdict == "correct", got["eom_xy"].feedback
+    assert got["eom"].verdict == "missing" and "the problem asks both versions" in got["eom"].feedback
+
+
+def test_1239_a_missing_version_says_the_problem_asks_both():
+    m = sp.Symbol("m", positive=True)
+    r, p_r, p_phi = sp.Function("r")(t), sp.Function("p_r")(t), sp.Function("p_phi")(t)
+    V = sp.Function("V")
+    fixed = p_r**2 / (2 * m) + p_phi**2 / (2 * m * r**2) + V(r)
+    got = {p.part: p for p in lagrade.check("12.39", H=fixed).parts}
+    assert got["H"].verdict == "correct", got["H"].feedback
+    assert got["H_p"].verdict == "missing" and "the problem asks both versions" in got["H_p"].feedback
+
+
+@pytest.mark.parametrize("pid", ["ex12.6", "12.5", "12.6", "12.30", "12.39", "12.40"])
+def test_every_missing_version_says_the_problem_asks_both(pid):
+    """An empty answer: each version of each two-version question is 'not answered', and says the
+    problem asks both versions (whether or not the shared name went to the other one)."""
+    problem = load_problem(pid)
+    versions = [p for p in problem.parts if p.version_of is not None]
+    assert versions, f"{pid} has no two-version question"
+    got = {p.part: p for p in lagrade.check(pid).parts}
+    for part in versions:
+        said = got[part.name].feedback
+        assert said.startswith("not answered") and "the problem asks both versions" in said, said

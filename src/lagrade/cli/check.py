@@ -19,7 +19,7 @@ from lagrade.cli.common import fail, leave, problems_option
 @click.argument("answer", type=click.Path(path_type=Path))
 @click.option("--json", "as_json", is_flag=True, help="Print exactly one JSON object.")
 @click.option("--accuracy", type=click.Choice(["fast", "default", "strict"]), default="default",
-              show_default=True, help="sample_rtol (1e-7/1e-8/1e-10), which decides every dynamics part at the sampled states and the "
+              show_default=True, help="the presets' sample_rtol (the feedback of a correct part says it), which decides every dynamics part at the sampled states and the "
                    "states the true motion visits; the integration's tolerance and the number of motions "
                    "(which states are visited); and the trajectory comparison's tolerance, which only "
                    "explains a rejection or, rarely, refutes (docs/numerics.md, section 5).")

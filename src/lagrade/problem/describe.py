@@ -51,8 +51,9 @@ def show_text(p: Problem) -> str:
             detail += f"; may use {', '.join(part.symbols)}"
         if part.accelerations:
             detail += "; may use the accelerations q'', evaluated on the true motion"
-        others = [(a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
-                   or p.system(a.system if a.system is not None else part.system).title or "another reading")
+        others = [(f"bound to {a.name}, " if a.name else "")
+                  + (a.says or ("any Lagrangian L + dF(q, t)/dt (another gauge)" if a.gauge else "")
+                     or p.system(a.system if a.system is not None else part.system).title or "another reading")
                   + (f", for {a.credit:.0%} of the part" if a.credit < 1 else "")
                   for a in part.alternatives]
         if others and part.follows is None:  # never a reference value: the formulations' words only
@@ -102,19 +103,27 @@ def template_text(p: Problem) -> str:
         if s.parameters:
             names = [q.name for q in s.parameters]
             lines.append(f"# system ({s.key}) only: {', '.join(names)} = parameters(\"{' '.join(names)}\")")
+    declared: set[str] = {q.name for q in p.parameters}  # each name once: 12.41's (b) and (b_small) share theta
     for s in p.systems:
         names = [c.name for c in s.coordinates]
         if s.key:
             lines.append(f"# system ({s.key}) {s.title}")
-        lines.append(f"{', '.join(names)} = coordinates(\"{' '.join(names)}\")")
+        new = [n for n in names if n not in declared]
+        if new:
+            lines.append(f"{', '.join(new)} = coordinates(\"{' '.join(new)}\")")
+        if len(new) < len(names):
+            lines.append(f"# ({', '.join(n for n in names if n not in new)} as above)")
+        declared.update(names)
         for f in s.functions:
             line = f"{f.name} = Function(\"{f.name}\")  # {f.name}({', '.join(f.args)}), general"
             if line not in lines:  # several systems may share one function (12.39's frames)
                 lines.append(line)
         if any(part.kind in ("hamiltonian", "hamilton_eqs")
                and s.key in {part.system, *(a.system for a in part.alternatives)} for part in p.parts):
-            moms = [f"p_{n}" for n in names]
-            lines.append(f"{', '.join(moms)} = momenta(\"{' '.join(moms)}\")")
+            moms = [f"p_{n}" for n in names if f"p_{n}" not in declared]
+            if moms:
+                lines.append(f"{', '.join(moms)} = momenta(\"{' '.join(moms)}\")")
+            declared.update(f"p_{n}" for n in names)
     lines.append("")
     for part in p.parts:
         lines.append(f"# {part.prompt or part.kind}: {KINDS[part.kind].expects}")

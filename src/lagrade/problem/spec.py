@@ -373,6 +373,10 @@ class Alternative(_Strict):
     the one used (`lagrade.verdicts.grade.Formulations`)."""
 
     system: str | None = Field(None, description="key of the system the part is graded in (default: the part's)")
+    name: Annotated[str, Field(pattern=IDENT)] | None = Field(
+        None, description="an alias of the part that selects this formulation: a value bound to that name is graded "
+                          "in it alone, a value bound to another of the part's names in the others (12.30: `lam`, the "
+                          "multiplier, a torque, answers the constraining force `N` asks)")
     reference: Any = Field(None, description="the right answer in this formulation (default: the part's), by kind")
     initial: dict[str, str] | None = Field(None, description="trajectory: initial values in this formulation "
                                                              "(default: the part's)")
@@ -449,6 +453,9 @@ class Part(_Strict):
         if self.domain is not None and not self.domain[0] < self.domain[1]:
             raise ValueError(f"part '{self.name}': domain must be [low, high] with low < high")
         for alt in self.alternatives:
+            if alt.name is not None and alt.name not in self.aliases:
+                raise ValueError(f"part '{self.name}': an alternative's name '{alt.name}' must be one of the part's "
+                                 f"aliases {self.aliases}")
             if alt.system is None and alt.reference is None and alt.initial is None and not alt.gauge:
                 raise ValueError(f"part '{self.name}': an alternative needs a system, a reference, initial values "
                                  f"or gauge = true")
@@ -519,10 +526,14 @@ class Problem(_Strict):
                 if alt.system is not None and part.linearized and not self.system(alt.system).equilibrium:
                     raise ValueError(f"part '{part.name}' is linearized but system '{alt.system}' has no equilibrium")
             versions = [p for p in self.parts if part.version_of is not None and p.version_of == part.version_of]
-            if part.version_of is not None and (len(versions) < 2 or len({p.system for p in versions}) < len(versions)
+            # distinct formulations: the systems a version is graded in (its own and its alternatives'); 12.39's
+            # H (either frame) and H_p (the rotating frame's) share a system but not a formulation
+            formulations = {frozenset({p.system, *(a.system for a in p.alternatives if a.system)}) for p in versions}
+            if part.version_of is not None and (len(versions) < 2 or len(formulations) < len(versions)
                                                 or sum(part.version_of in (p.name, *p.aliases) for p in versions) != 1):
                 raise ValueError(f"part '{part.name}': the versions of '{part.version_of}' must be two or more parts "
-                                 f"on distinct systems, exactly one of them named or aliased '{part.version_of}'")
+                                 f"graded in distinct systems, exactly one of them named or aliased "
+                                 f"'{part.version_of}'")
             others = {p.name for p in self.parts if p is not part}
             if part.also_answered_by and (part.kind != "numerical_solution"
                                           or not set(part.also_answered_by) <= others):

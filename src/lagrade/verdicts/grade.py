@@ -259,19 +259,20 @@ def _ungradable(part, answer: LoadedAnswer) -> PartResult | None:
     if part.name not in answer.values:
         if answer.fatal is not None:
             return _unusable(part, "invalid", f"{NOT_GRADED}{answer.fatal}")
-        return _unusable(part, "missing", f"no value bound to '{part.name}'{_other_version(part, answer)}")
+        return _unusable(part, "missing", f"not answered: no value for '{part.name}'{_other_version(part, answer)}")
     return None
 
 
 def _other_version(part, answer: LoadedAnswer) -> str:
-    """For a missing version of a two-version question: where the shared name's value went instead."""
+    """For a missing version of a two-version question: where the shared name's value went instead, and
+    in any case that the problem asks both versions (every two-version id says it alike)."""
     if part.version_of is None:
         return ""
     for graded_as, name in answer.routed.items():
         if name == part.version_of and graded_as != part.name:
             return (f" (your {name} is written in the other version's coordinates and is graded as {graded_as}; "
                     f"the problem asks both versions)")
-    return ""
+    return f" (the problem asks both versions of {part.version_of}: this one is {part.name})"
 
 
 class Formulations:
@@ -300,7 +301,15 @@ class Formulations:
         whether it is graded up to a gauge term."""
         forms = [(part, self._words(part.system, "") if any(a.system not in (None, part.system)
                                                              for a in part.alternatives) else "", False)]
-        for alt in part.alternatives:
+        alternatives = part.alternatives
+        if any(alt.name is not None for alt in alternatives):  # selected by the name the value is bound to
+            bound = self.answer.bound_as.get(part.name, part.name)
+            chosen = [alt for alt in alternatives if alt.name == bound]
+            if chosen:
+                forms, alternatives = [], chosen
+            else:
+                alternatives = [alt for alt in alternatives if alt.name is None]
+        for alt in alternatives:
             system = alt.system if alt.system is not None else part.system
             update = {"system": system, "alternatives": [], "follows": None, "mistakes": alt.mistakes}
             if alt.reference is not None:
@@ -334,6 +343,8 @@ class Formulations:
     def grade(self, part, value, read_as: tuple[str, ...], memo: VerdictMemo | None) -> PartResult:
         forms = self.variants(part)
         key = memo.key(self.ctx, part, value) if memo is not None else None
+        if key is not None and any(alt.name is not None for alt in part.alternatives):
+            key = (key, self.answer.bound_as.get(part.name, part.name))  # the name chooses the formulation
         if key is not None and part.follows is not None:
             key = (key, self.chosen.get(part.follows))  # the verdict depends on that choice too
         graded_part = memo.get(key) if key is not None else None
@@ -455,14 +466,17 @@ def check(problem: str | Path | Problem, answer: str | Path | None = None, *, pr
     unknown = [name for name in only or () if name not in {part.name for part in prob.parts}]
     if unknown:
         raise UnknownPartError(f"problem {prob.id} has no part {', '.join(unknown)}")
-    given, routed = {}, {}
+    given, routed, bound_as = {}, {}, {}
     for name, value in parts.items():
         try:
             part_name = prob.part(name).name
         except KeyError:
             raise UnknownPartError(f"problem {prob.id} has no part '{name}'") from None
         if not prob.versions(name):
-            given[part_name] = value
+            if part_name in given:
+                raise TypeError(f"'{bound_as[part_name]}' and '{name}' answer the same part {part_name}: "
+                                f"give one of them")
+            given[part_name], bound_as[part_name] = value, name
     for name, value in parts.items():  # a two-version question's shared name: the version it is written in
         if prob.versions(name):
             from lagrade.answer.reading.load import version_for
@@ -502,6 +516,7 @@ def check(problem: str | Path | Problem, answer: str | Path | None = None, *, pr
         else:
             loaded.part_problems[name] = AnswerProblem(file=name, line=None, message=reason)
     loaded.routed.update(routed)
+    loaded.bound_as.update(bound_as)
     try:
         return grade_values(prob, loaded, accuracy, only, hints=hints, credit=credit, read_as=read_as,
                             grading_seconds=grading_seconds)

@@ -2,7 +2,7 @@
 
 The engine's feedback (``PartResult.feedback``) keeps every figure of the evidence, for the
 instructor's report and ``lagrade check --json``: "trajectories agree over t in [0, 2] (DOP853 at
-rtol 1e-10) (within rtol 1e-06, atol 1e-06, 1545 evaluations, 0.09 s)". A student reads "your
+rtol 1e-10) (compared within rtol 1e-06, atol 1e-06, 1545 evaluations, 0.09 s)". A student reads "your
 Lagrangian gives the same motion as the true one over t in [0, 2]": what ``lagrade check`` prints
 and what the course server shows a student (:func:`in_words`). And the assignment's feedback level
 (:func:`at_level`): ``hints``, ``named`` (the hints left out) or ``verdict`` (the verdict alone).

@@ -1,4 +1,4 @@
-# expect: eom=correct, lam=correct, N=correct
+# expect: eom=correct, N=correct
 # The other parts as in the reference solution; the form under test is bound last.
 from sympy import Eq, Function, cos, sin, symbols
 

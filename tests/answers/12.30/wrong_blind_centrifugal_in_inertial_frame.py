@@ -1,4 +1,4 @@
-# expect: eom_xy=incorrect, eom=correct, lam=correct, N=correct
+# expect: eom_xy=incorrect, eom=correct, N=correct
 from lagrade.answer import *
 
 m, omega = parameters("m omega")

@@ -1,4 +1,4 @@
-# expect: eom_xy=correct, eom=correct, lam=incorrect, N=incorrect
+# expect: eom_xy=correct, eom=correct, N=incorrect
 from lagrade.answer import *
 
 m, omega = parameters("m omega")

@@ -1,4 +1,4 @@
-# expect: eom_xy=correct, eom=incorrect, lam=correct, N=correct
+# expect: eom_xy=correct, eom=incorrect, N=correct
 from lagrade.answer import *
 
 m, omega = parameters("m omega")

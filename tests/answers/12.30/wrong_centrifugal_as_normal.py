@@ -1,4 +1,4 @@
-# expect: eom_xy=correct, eom=incorrect, lam=incorrect, N=incorrect
+# expect: eom_xy=correct, eom=incorrect, N=incorrect
 # Centrifugal term with the wrong sign (r'' = -omega**2 r, as if the wire pulled the bead in), and the
 # wire's force taken as the centripetal force m omega**2 r.
 from lagrade.answer import *

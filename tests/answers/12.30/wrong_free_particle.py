@@ -1,4 +1,4 @@
-# expect: eom_xy=incorrect, eom=incorrect, lam=incorrect, N=incorrect
+# expect: eom_xy=incorrect, eom=incorrect, N=incorrect
 # Ignored the rotation: the bead taken as free along the wire, no centrifugal term, no constraint force.
 from lagrade.answer import *
 

@@ -1,4 +1,4 @@
-# expect: eom_xy=incorrect, eom=correct, lam=incorrect, N=incorrect
+# expect: eom_xy=incorrect, eom=correct, N=incorrect
 # d/dt(r**2) taken as r*r' (factor 2 lost); Cartesian: component taken perpendicular to the wire instead of along it.
 from lagrade.answer import *
 

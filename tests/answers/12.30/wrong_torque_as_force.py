@@ -1,4 +1,4 @@
-# expect: eom_xy=correct, eom=correct, lam=correct, N=incorrect
+# expect: eom_xy=correct, eom=correct, N=incorrect
 # Gave the multiplier (a torque) as the normal force.
 from lagrade.answer import *
 

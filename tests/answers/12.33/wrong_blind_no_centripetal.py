@@ -1,4 +1,4 @@
-# expect: L=correct, eom=correct, lam=correct, N=incorrect, leave_angle=incorrect
+# expect: L=correct, eom=correct, N=incorrect, leave_angle=incorrect
 from lagrade.answer import *
 
 m, R, r_s, g = parameters("m R r_s g")

@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=incorrect, lam=incorrect, N=correct, leave_angle=correct
+# expect: L=incorrect, eom=incorrect, N=correct, leave_angle=correct
 from lagrade.answer import *
 
 m, R, r_s, g = parameters("m R r_s g")

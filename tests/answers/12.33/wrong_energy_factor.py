@@ -1,4 +1,4 @@
-# expect: L=correct, eom=correct, lam=correct, N=incorrect, leave_angle=incorrect
+# expect: L=correct, eom=correct, N=incorrect, leave_angle=incorrect
 # Energy from the top without the factor 2: (R + r_s) theta'^2 = g (1 - cos theta), so N = m g (2 cos - 1).
 from lagrade.answer import *
 

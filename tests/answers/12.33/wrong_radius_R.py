@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=incorrect, lam=incorrect, N=correct, leave_angle=correct
+# expect: L=incorrect, eom=incorrect, N=correct, leave_angle=correct
 # The small sphere's radius forgotten: its centre taken to move on the circle of radius R.
 from lagrade.answer import *
 

@@ -1,4 +1,4 @@
-# expect: L=incorrect, eom=incorrect, lam=correct, N=correct, leave_angle=incorrect
+# expect: L=incorrect, eom=incorrect, N=correct, leave_angle=incorrect
 # Height measured downward by mistake (V = -m g rho cos theta): the top looks stable; and the rolling result 10/17 quoted.
 from lagrade.answer import *
 

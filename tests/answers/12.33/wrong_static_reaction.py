@@ -1,4 +1,4 @@
-# expect: L=correct, eom=correct, lam=incorrect, N=incorrect, leave_angle=incorrect
+# expect: L=correct, eom=correct, N=incorrect, leave_angle=incorrect
 # The reaction taken as the static m g cos(theta) (centripetal term forgotten): falls off at 90 degrees.
 from lagrade.answer import *
 

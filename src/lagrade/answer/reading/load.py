@@ -46,6 +46,9 @@ class LoadedAnswer:
     stdout: str = ""
     #: versions of a two-version question answered by the shared name: part -> that name
     routed: dict[str, str] = field(default_factory=dict)
+    #: the name each part's value was bound to (its own or an alias): an alternative may be selected by
+    #: its alias (`Alternative.name`)
+    bound_as: dict[str, str] = field(default_factory=dict)
 
 
 def load_answer(path: Path, problem: Problem, limits=None) -> LoadedAnswer:
@@ -163,8 +166,17 @@ def no_expected_name(path: Path, problem: Problem) -> str:
     import difflib
 
     expected = list(answer_names(problem))
+    # the problem's own symbols (a template's `m, l1 = parameters(...)`, its coordinates and momenta) are
+    # not attempts at an answer name: no "did you mean 'L' for 'l1'"
+    coords = {c.name for s in problem.systems for c in s.coordinates}
+    own = {q.name for s in problem.systems for q in problem.parameters_of(s.key)} | coords \
+        | {f"p_{c}" for c in coords} | {f.name for s in problem.systems for f in s.functions} \
+        | {c.multiplier for s in problem.systems for c in s.constraints if c.multiplier} \
+        | {sym for part in problem.parts for sym in part.symbols}
     hints = []
     for name in bound_names(path):
+        if name in own:  # ex12.4's parameter a is also its part's name: bound as the symbol, not an answer
+            continue
         guess = USUAL_WORDS.get(name.lower())
         if guess not in expected:
             close = difflib.get_close_matches(name, expected, n=1, cutoff=0.6) or \
@@ -216,7 +228,19 @@ def _bind_values(out: LoadedAnswer, raw: dict, problems: list, path: Path, probl
                 out.part_problems.setdefault(part, refused)
                 continue
             if name not in shared:
+                if part in out.values and out.bound_as.get(part, name) != name:
+                    # two names of one part (an alias and the name, 12.30's lam and N): the part's own name
+                    # wins, as a version's own name wins over the shared one; else the first bound
+                    graded, ignored = (name, out.bound_as[part]) if name == part else (out.bound_as[part], name)
+                    out.problems.append(AnswerProblem(
+                        file=path.name, line=None, message=f"'{ignored}' and '{graded}' answer the same part "
+                        f"{part}: '{graded}' is graded, '{ignored}' ignored"))
+                    if name != part:
+                        continue
+                    out.values[part], out.bound_as[part] = value, name
+                    continue
                 out.values.setdefault(part, value)
+                out.bound_as.setdefault(part, name)
         elif path.suffix == ".toml":
             out.problems.append(AnswerProblem(file=str(path), line=None,
                                               message=f"'{name}' is not a part of problem {problem.id}; ignored"))

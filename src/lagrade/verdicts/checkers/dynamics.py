@@ -218,8 +218,14 @@ class TrajectoryCase:
 
 def _cost(traj: Comparison) -> str:
     acc = traj.case.accuracy if getattr(traj, "case", None) else None
-    tol = f"within rtol {acc.compare_rtol:g}, atol {acc.compare_atol:g}, " if acc is not None else ""
+    tol = f"compared within rtol {acc.compare_rtol:g}, atol {acc.compare_atol:g}, " if acc is not None else ""
     return f" ({tol}{traj.rhs_evals} evaluations, {traj.seconds:.2f} s)"
+
+
+def _sampled(ctx: Context) -> str:
+    """The tolerance that decided agreement at the sampled states: the preset's ``sample_rtol``, said
+    beside the states it applies to (the comparison's looser rtol is the trajectories', said with them)."""
+    return f" (within rtol {ctx.accuracy.sample_rtol:g})"
 
 
 def _confirm(ctx: Context, prove: Callable[[], bool | None], trajectory: Callable[[], Comparison]):
@@ -254,7 +260,7 @@ def _decide(ctx: Context, part: Part, proof: bool | None, traj: Comparison | Non
         return res
     if traj is not None and traj.agree:
         res = graded(part, 1.0, "trajectory",
-                     f"correct: equal at every sampled state and {traj.describe()}{_cost(traj)}.{extra}")
+                     f"correct: equal at every sampled state{_sampled(ctx)} and {traj.describe()}{_cost(traj)}.{extra}")
         if traj.window is not None and traj.why_window.startswith("chaotic") and traj.window < 0.1 * traj.horizon:
             res.review = (f"chaotic scene: the motions could be compared only over [0, {traj.window:.3g}] of "
                           f"[0, {traj.horizon:.3g}], so they hardly tested this answer beyond the sampled states")
@@ -267,7 +273,7 @@ def _decide(ctx: Context, part: Part, proof: bool | None, traj: Comparison | Non
                      f"{traj.describe()} (beyond the {acc.name} comparison tolerance, rtol {acc.compare_rtol:g}). "
                      "A constant or coefficient slightly off (a rounded number, say) does this.")
         return _with_trajectory_evidence(res, traj)
-    res = graded(part, 1.0, "numeric", f"correct: equal at every sampled state.{extra}")
+    res = graded(part, 1.0, "numeric", f"correct: equal at every sampled state{_sampled(ctx)}.{extra}")
     why = traj.describe() if traj is not None else "the answer's motion could not be integrated"
     res.review = f"decided by the sampled states alone: no symbolic proof, and no trajectory evidence ({why})"
     return res
