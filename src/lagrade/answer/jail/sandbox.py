@@ -119,21 +119,23 @@ def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: Sand
 
     name = path.name
     token = secrets.token_hex(16)  # a report without it was not written by our child code
+    job = json.dumps({"source": source, "path": str(path), "name": name, "wanted": wanted,
+                      "limits": limits.model_dump(), "token": token, "tripwires": TRIPWIRES}).encode("utf-8")
+    job_fd = _job_file(job)
     result_r, result_w = os.pipe()
     out_r, out_w = os.pipe()
-    child = {"source": source, "path": str(path), "name": name, "wanted": wanted,
-             "limits": limits.model_dump(), "token": token, "tripwires": TRIPWIRES}
     spawned: dict[str, Any] = {}
 
     def spawn() -> None:
         try:
-            spawned["pid"] = zyg.spawn(child, (result_w, out_w))
+            spawned["pid"] = zyg.spawn((result_w, out_w, job_fd))
             spawned["at"] = time.monotonic()
         except Exception as exc:  # noqa: BLE001  (told to the student as a sandbox failure, in finish)
             spawned["error"] = exc if isinstance(exc, ZygoteError) else f"{type(exc).__name__}: {exc}"
         finally:
             os.close(result_w)
             os.close(out_w)
+            os.close(job_fd)
 
     thread = threading.Thread(target=spawn, name="lagrade-spawn", daemon=True)
     thread.start()
@@ -162,6 +164,30 @@ def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: Sand
         close_pipes()
 
     return finish, abandon
+
+
+def _job_file(job: bytes) -> int:
+    """A descriptor holding ``job`` (the answer's source, path, names, limits and token), read from
+    its start by the child after it is forked: the zygote passes it on without reading it, so no
+    answer's bytes are ever in the memory the next answers are forked from (issue 43). An anonymous
+    memory file where there is one (Linux), else an unlinked temporary file: the whole job is
+    written before the zygote is asked, so nothing waits on a reader."""
+    if hasattr(os, "memfd_create"):
+        fd = os.memfd_create("lagrade-answer", getattr(os, "MFD_CLOEXEC", 0))
+    else:
+        import tempfile
+
+        with tempfile.TemporaryFile() as fh:
+            fd = os.dup(fh.fileno())
+    try:
+        view = memoryview(job)
+        while view:
+            view = view[os.write(fd, view):]
+        os.lseek(fd, 0, os.SEEK_SET)
+    except BaseException:
+        os.close(fd)
+        raise
+    return fd
 
 
 def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, token: str, result_r: int, out_r: int,

@@ -104,10 +104,11 @@ class Zygote:
             raise ZygoteError(reply["error"])
         return reply
 
-    def spawn(self, child: dict[str, Any], fds: tuple[int, int]) -> int:
-        """Fork a child running ``child`` (`lagrade.answer.jail.child.child_main`'s arguments), writing
-        its report and output to ``fds``; its pid (in the zygote's PID namespace)."""
-        return int(self.request({"op": "spawn", "child": child}, fds)["pid"])
+    def spawn(self, fds: tuple[int, int, int]) -> int:
+        """Fork a child that writes its report and output to ``fds[0]`` and ``fds[1]`` and reads its
+        job (`lagrade.answer.jail.child.child_main`) from ``fds[2]`` once forked; its pid (in the
+        zygote's PID namespace). The request itself says nothing about the answer."""
+        return int(self.request({"op": "spawn"}, fds)["pid"])
 
     def reap(self, pid: int, kill: bool, deadline: float) -> tuple[int, float]:
         """Wait for the child (killing it first if asked); its wait status and CPU seconds."""
@@ -307,7 +308,9 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
                 if uid is not None:
                     os.chown(workdir, uid, uid)
                 vm = _vm_size(status_fd)
-                result_w, out_w = fds
+                if len(fds) != 3:
+                    raise ValueError(f"a spawn needs 3 descriptors, got {len(fds)}")
+                result_w, out_w, job_fd = fds
                 pid = os.fork()
                 if pid == 0:  # the child: never returns
                     sock.close()
@@ -315,7 +318,7 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
                     signal.signal(signal.SIGCHLD, signal.SIG_DFL)
                     os.close(wake_r)
                     os.close(wake_w)
-                    child_code.child_main(request["child"], workdir, result_w, out_w,
+                    child_code.child_main(job_fd, workdir, result_w, out_w,
                                        layers=active, uid=uid, readable=readable, vm_size=vm)
                 workdirs[pid] = workdir
                 reply: dict[str, Any] = {"pid": pid}
