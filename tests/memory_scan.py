@@ -89,7 +89,7 @@ def scanner(text: str) -> str:
             .replace("CONTROL_XOR", repr(bytes(c ^ 0x5A for c in control.encode()))))
 
 
-def victim(text: str, answer: str = "L = 1\n", lines: int = 600) -> str:
-    """``answer`` with ``text`` in ``lines`` comment lines: a file of ~30 kB, so that its freed copies
+def victim(text: str, answer: str = "L = 1\n", lines: int = 1500) -> str:
+    """``answer`` with ``text`` in ``lines`` comment lines: a file of ~80 kB, so that its freed copies
     in a process that received it are not all reused before the next answer looks."""
     return answer + "".join(f"# {i} {text}\n" for i in range(lines))
