@@ -5,8 +5,8 @@ An answer file is hostile code, and Python cannot contain Python: the screen and
 defence. The defence is what the kernel enforces on the process that runs the file:
 
 ``uid``           another uid than the grader's (a fresh unprivileged uid per answer when lagrade
-                  runs as root; inside a user namespace otherwise): no file, process or cache of the
-                  grader's is its own.
+                  runs as root, from a block of the zygote's own: no two graders share one; inside
+                  a user namespace otherwise): no file, process or cache of the grader's is its own.
 ``mount``         a mount namespace whose root is an empty tmpfs holding, read-only, only Python's
                   standard library, sympy and mpmath, the system's shared libraries and /dev/null:
                   no problem files, references, cache, gradebook, home, shell or /proc.
@@ -37,15 +37,20 @@ import sys
 import sysconfig
 from collections.abc import Iterable, Sequence
 
-__all__ = ["LAYERS", "MINIMUM", "JAIL_UID_BASE", "enter_namespaces", "build_root", "confine", "jail_dirs"]
+__all__ = ["LAYERS", "MINIMUM", "JAIL_UID_BASE", "JAIL_UID_BLOCK", "jail_uid", "enter_namespaces", "build_root", "confine", "jail_dirs"]
 
 LAYERS = ("uid", "mount", "pid", "network", "no_new_privs", "limits", "landlock", "seccomp")
 #: what a class may not be graded without (`lagrade grade` refuses otherwise): a view of the files
 #: that holds no key (the mount namespace or Landlock), a system-call allowlist, and no privileges
 MINIMUM_FS = ("mount", "landlock")
 MINIMUM = ("seccomp", "no_new_privs", "limits")
-#: answers run as JAIL_UID_BASE + n, a uid no account has, one per answer
+#: answers run as uids from JAIL_UID_BASE up, which no account has: each zygote (one grader's tree of
+#: answers) draws from a block of JAIL_UID_BLOCK of its own, numbered by its first process's pid, so
+#: two graders at once never run answers as the same uid (`jail_uid`)
 JAIL_UID_BASE = 1_900_000_000
+JAIL_UID_BLOCK = 512
+#: Linux's largest pid (PID_MAX_LIMIT on 64 bits): the blocks end below 2**32 - 1, which is no uid
+_PID_MAX_LIMIT = 1 << 22
 #: where the per-answer working directories live inside the mount namespace
 JAIL_WORK = "/jail"
 
@@ -72,6 +77,12 @@ def _check(result: int, what: str) -> None:
     if result != 0:
         err = ctypes.get_errno()
         raise OSError(err, f"{what}: {os.strerror(err)}")
+
+
+def jail_uid(tree: int, n: int) -> int:
+    """The uid of the ``n``-th answer of the zygote whose first process is pid ``tree``: the block of
+    a live process's pid is no other live zygote's, and a zygote skips a uid still in use."""
+    return JAIL_UID_BASE + (tree % _PID_MAX_LIMIT) * JAIL_UID_BLOCK + n % JAIL_UID_BLOCK
 
 
 # =========================================================================== namespaces (zygote)

@@ -204,6 +204,9 @@ def _recv(sock: socket.socket) -> tuple[Any, list[int]]:
 def _main(argv: list[str]) -> None:
     """``python -m lagrade.answer.jail.zygote FD LAYERS warm|cold STAGING``."""
     fd, wanted, warm, staging = int(argv[0]), set(filter(None, argv[1].split(","))), argv[2] == "warm", argv[3]
+    # numbers this zygote's block of uids: this process lives (in the grader's PID namespace, where no
+    # other live zygote has its pid) as long as any answer forked below it
+    tree = os.getpid()
     kernel.die_with_parent()
     sock = socket.socket(fileno=fd)
     from lagrade.answer.jail import child as child_code
@@ -245,7 +248,7 @@ def _main(argv: list[str]) -> None:
     # whole directories; without it, around them
     grants = allowed if "mount" in active else kernel.landlock_grants(allowed, [*hidden, *child_code.secret_dirs()])
     _send(sock, {"active": active, "inactive": inactive})
-    _serve(sock, active, grants, status_fd)
+    _serve(sock, active, grants, status_fd, tree)
 
 
 def _open_status() -> int | None:
@@ -267,10 +270,13 @@ def _vm_size(status_fd: int | None) -> int:
     return 0
 
 
-def _serve(sock: socket.socket, active: list[str], readable: list[str], status_fd: int | None) -> None:
+def _serve(sock: socket.socket, active: list[str], readable: list[str], status_fd: int | None, tree: int) -> None:
+    """Fork, reap and answer the grader until the socket closes. ``tree``: the pid that numbers this
+    zygote's block of uids (:func:`lagrade.answer.jail.kernel.jail_uid`)."""
     from lagrade.answer.jail import child as child_code
 
     workdirs: dict[int, str] = {}
+    uids: dict[int, int] = {}  # the uid of each child not yet reaped
     done: dict[int, tuple[int, float]] = {}  # reaped before the grader asked
     count = 0
     inside = "mount" in active
@@ -288,7 +294,7 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
     poller.register(wake_r, select.POLLIN)
     base_nice = os.getpriority(os.PRIO_PROCESS, 0)  # the children's, unless their coordinator lowers them
     while True:
-        _reap_finished(done, workdirs)
+        _reap_finished(done, workdirs, uids)
         ready = {fd for fd, _ in poller.poll()}
         if wake_r in ready:
             _drain(wake_r)
@@ -301,7 +307,9 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
         try:
             if request.get("op") == "spawn":
                 count += 1
-                uid = kernel.JAIL_UID_BASE + count % 1_000_000 if "uid" in active and as_root else None
+                uid = None
+                if "uid" in active and as_root:
+                    count, uid = _free_uid(tree, count, set(uids.values()))
                 workdir = f"{kernel.JAIL_WORK}/{count}" if inside else tempfile.mkdtemp(prefix="lagrade-answer-")
                 if inside:
                     os.mkdir(workdir, 0o700)
@@ -321,12 +329,15 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
                     child_code.child_main(job_fd, workdir, result_w, out_w,
                                        layers=active, uid=uid, readable=readable, vm_size=vm)
                 workdirs[pid] = workdir
+                if uid is not None:
+                    uids[pid] = uid
                 reply: dict[str, Any] = {"pid": pid}
             elif request.get("op") == "reap":
                 pid = int(request["pid"])
                 status, cpu = done.pop(pid) if pid in done else child_code.reap_child(pid, bool(request["kill"]),
                                                                             float(request["deadline"]))
                 shutil.rmtree(workdirs.pop(pid, ""), ignore_errors=True) if pid in workdirs else None
+                uids.pop(pid, None)
                 reply = {"status": status, "cpu": cpu}
             elif request.get("op") == "lowered":
                 try:
@@ -352,7 +363,17 @@ def _drain(fd: int) -> None:
         pass
 
 
-def _reap_finished(done: dict[int, tuple[int, float]], workdirs: dict[int, str]) -> None:
+def _free_uid(tree: int, count: int, in_use: set[int]) -> tuple[int, int]:
+    """``(count, uid)``: the first uid of this zygote's block from the ``count``-th on that no child
+    alive has (a child not reaped 512 answers later keeps its uid to itself)."""
+    for n in range(count, count + kernel.JAIL_UID_BLOCK):
+        uid = kernel.jail_uid(tree, n)
+        if uid not in in_use:
+            return n, uid
+    raise OSError(f"all {kernel.JAIL_UID_BLOCK} uids of this grader's block are in use by running answers")
+
+
+def _reap_finished(done: dict[int, tuple[int, float]], workdirs: dict[int, str], uids: dict[int, int]) -> None:
     """Reap every child that has ended (a grading that ran out of time never asks), keeping its
     status for when the grader asks; called whenever SIGCHLD wakes the zygote."""
     while True:
@@ -364,6 +385,7 @@ def _reap_finished(done: dict[int, tuple[int, float]], workdirs: dict[int, str])
             return
         done[pid] = (status, usage.ru_utime + usage.ru_stime)
         shutil.rmtree(workdirs.pop(pid, ""), ignore_errors=True) if pid in workdirs else None
+        uids.pop(pid, None)
         while len(done) > _MAX_KEPT:
             del done[next(iter(done))]
 
