@@ -16,8 +16,8 @@ defence. The defence is what the kernel enforces on the process that runs the fi
 ``limits``        CPU, address space, file size, descriptors, no new processes.
 ``landlock``      the kernel's file-access allowlist: read-only Python and system libraries, no
                   writes, no execution; holds without any privilege.
-``seccomp``       a system-call allowlist: no execve, ptrace, sockets, signals, mounts, or opening a
-                  file for writing.
+``seccomp``       a system-call allowlist: no execve, ptrace, sockets, signals, mounts, opening a
+                  file for writing, or signal-driven I/O (fcntl's F_SETOWN, F_SETSIG, O_ASYNC).
 
 The namespaces are entered once by the clean zygote (:mod:`lagrade.answer.jail.zygote`), which every
 child is forked from; the rest is applied by each child on itself before it reads the answer.
@@ -379,7 +379,7 @@ _WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_TRUNC | os.O_APPEND |
 _ALLOWED_SYSCALLS = (
     "read", "readv", "pread64", "write", "writev", "close", "fstat", "stat", "lstat", "newfstatat",
     "statx", "lseek", "getdents64", "getdents", "getcwd", "readlink", "readlinkat", "access",
-    "faccessat", "faccessat2", "fcntl", "dup", "dup2", "dup3", "mmap", "munmap", "mprotect", "mremap",
+    "faccessat", "faccessat2", "dup", "dup2", "dup3", "mmap", "munmap", "mprotect", "mremap",
     "madvise", "brk", "rt_sigaction", "rt_sigprocmask", "rt_sigreturn", "sigaltstack", "futex",
     "set_robust_list", "get_robust_list", "rseq", "set_tid_address", "getpid", "gettid", "getppid",
     "getuid", "geteuid", "getgid", "getegid", "getgroups", "getresuid", "getresgid", "getpgrp",
@@ -388,6 +388,16 @@ _ALLOWED_SYSCALLS = (
     "times", "getrlimit", "exit", "exit_group", "restart_syscall", "poll", "ppoll", "select",
     "pselect6", "getcpu", "membarrier",
 )
+
+#: fcntl commands an answer may use (`_FCNTL_ALLOWED`; F_SETFL without O_ASYNC): a descriptor's
+#: flags and duplicates. Refused: F_SETOWN, F_SETOWN_EX, F_SETSIG and O_ASYNC (signal-driven I/O: the
+#: kernel would send a signal of the answer's choosing to a process of its choosing whenever its
+#: pipes change, the grader reading them included), leases, notifications, locks, seals, pipe sizes
+_F_SETFL, _O_ASYNC = 4, getattr(os, "O_ASYNC", 0o20000)
+_FCNTL_ALLOWED = {
+    "F_DUPFD": 0, "F_GETFD": 1, "F_SETFD": 2, "F_GETFL": 3, "F_GETLK": 5, "F_GETOWN": 9, "F_GETSIG": 11,
+    "F_GETOWN_EX": 16, "F_GETLEASE": 1025, "F_DUPFD_CLOEXEC": 1030, "F_GETPIPE_SZ": 1032, "F_GET_SEALS": 1034,
+}
 
 
 def seccomp_available() -> str | None:
@@ -411,6 +421,13 @@ def _seccomp() -> str | None:
         for name in _ALLOWED_SYSCALLS:
             try:
                 f.add_rule(sc.ALLOW, name)
+            except (RuntimeError, OSError, ValueError):  # not a call of this architecture
+                pass
+        for call in ("fcntl", "fcntl64"):  # fcntl64: 32-bit machines' name for the same call
+            try:
+                for command in _FCNTL_ALLOWED.values():
+                    f.add_rule(sc.ALLOW, call, sc.Arg(1, sc.EQ, command))
+                f.add_rule(sc.ALLOW, call, sc.Arg(1, sc.EQ, _F_SETFL), sc.Arg(2, sc.MASKED_EQ, _O_ASYNC, 0))
             except (RuntimeError, OSError, ValueError):  # not a call of this architecture
                 pass
         read_only = sc.Arg(2, sc.MASKED_EQ, _WRITE_FLAGS, 0)
