@@ -11,11 +11,13 @@ was not written by our child code.
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import secrets
 import selectors
 import signal
+import sys
 import time
 import weakref
 from collections.abc import Sequence
@@ -150,11 +152,12 @@ def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: Sand
         try:
             thread.join()
             if "pid" not in spawned:
+                why = neutral_paths(str(spawned.get("error")), path)
                 return SandboxOutcome(status="crashed", problems=[AnswerProblem(
-                    file=name, line=None, message=f"the sandbox could not run the answer ({spawned.get('error')}); "
+                    file=name, line=None, message=f"the sandbox could not run the answer ({why}); "
                                                   "please report it to your instructor")])
             return _collect(spawned["pid"], name, wanted, limits, token, result_r, out_r, spawned["at"], zyg.reap,
-                            zyg.lowered)
+                            zyg.lowered, path=path)
         finally:  # also when the grading's bound stops the reading: the pipes never outlive it
             close_pipes()
 
@@ -191,14 +194,15 @@ def _job_file(job: bytes) -> int:
 
 
 def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, token: str, result_r: int, out_r: int,
-             started: float, reap=None, lowered=None) -> SandboxOutcome:
+             started: float, reap=None, lowered=None, path: Path | None = None) -> SandboxOutcome:
     """``lowered(pid)``: whether the child now runs at a lower priority than its zygote (then its
-    wall-clock bound is :data:`LOWERED_WALL_FACTOR` times as long)."""
+    wall-clock bound is :data:`LOWERED_WALL_FACTOR` times as long). Every text of the child's (its
+    output, its problems) has the grader's paths replaced (:func:`neutral_paths`)."""
     result, output = bytearray(), bytearray()
     timed_out, overflow, stretched = _read(pid, limits, result_r, out_r, started, result, output, lowered)
     wall = limits.wall_seconds * (LOWERED_WALL_FACTOR if stretched else 1)
     exit_status, cpu_used = (reap or reap_child)(pid, kill=timed_out or overflow, deadline=started + wall + 2)
-    stdout = output.decode("utf-8", "replace")[:STDOUT_KEEP]
+    stdout = neutral_paths(output.decode("utf-8", "replace"), path)[:STDOUT_KEEP]
 
     def outcome(status: str, message: str) -> SandboxOutcome:
         return SandboxOutcome(status=status, stdout=stdout, problems=[AnswerProblem(file=name, line=None, message=message)])
@@ -225,9 +229,68 @@ def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, toke
             return outcome("crashed", f"the answer was not run: {why}; please report it to your instructor")
         return outcome("crashed", f"the answer could not be run (the sandbox stopped with code {code} and no result)")
     values = {k: v for k, v in report.values.items() if k in wanted}
-    problems = [p.model_copy(update={"file": name}) for p in report.problems[:50]]
+    problems = [p.model_copy(update={"file": name, "message": neutral_paths(p.message, path)}) for p in report.problems[:50]]
     return SandboxOutcome(values=values, problems=problems, stdout=stdout, status=report.status)
 
+
+
+def neutral_paths(text: str, answer: Path | str | None = None) -> str:
+    """``text`` (what a student is shown of an answer's run: its output, an error, a refusal) with
+    the grader's paths replaced by neutral names: the answer's own path by its file name, and where
+    Python, the packages, lagrade and its hidden data are installed by ``<python>``,
+    ``<site-packages>``, ``<sympy>``, ``<lagrade>``, ``<hidden>``... A warning or a "Permission
+    denied" otherwise tells the student where the grader keeps its files."""
+    pairs = list(_install_names())
+    if answer is not None:
+        answer = Path(answer)
+        pairs = [(p, answer.name) for p in _spellings(str(answer))] + \
+            [(p, ".") for p in _spellings(str(answer.parent)) if _specific(p)] + pairs
+    for real, name in sorted(pairs, key=lambda pair: -len(pair[0])):
+        if real in text:
+            text = text.replace(real, name)
+    return text
+
+
+def _spellings(path: str) -> set[str]:
+    return {p for p in (path, os.path.abspath(path), os.path.realpath(path)) if p}
+
+
+def _specific(path: str) -> bool:
+    """A path naming an installation, not a system-wide folder (``/``, ``/usr``, ``/opt``, ``/usr/local``)."""
+    return len(Path(path).parts) > 2 and path.rstrip("/") not in ("/usr/local", "/usr/lib", "/usr/lib64", "/usr/share")
+
+
+@functools.cache
+def _install_names() -> tuple[tuple[str, str], ...]:
+    """(path, neutral name) for every place the grader's files are installed, longest first."""
+    import sysconfig
+
+    import mpmath
+    import sympy
+
+    import lagrade
+    from lagrade.answer.jail.child import secret_dirs
+
+    found: dict[str, str] = {}
+
+    def name(path: str | None, label: str) -> None:
+        if path:
+            for spelling in _spellings(path):
+                if _specific(spelling):
+                    found.setdefault(spelling.rstrip("/"), label)
+
+    for secret in secret_dirs():
+        name(secret, "<hidden>")
+    for module, label in ((lagrade, "<lagrade>"), (sympy, "<sympy>"), (mpmath, "<mpmath>")):
+        name(os.path.dirname(module.__file__ or ""), label)
+    paths = sysconfig.get_paths()
+    for key, label in (("purelib", "<site-packages>"), ("platlib", "<site-packages>"), ("stdlib", "<python>"),
+                       ("platstdlib", "<python>")):
+        name(paths.get(key), label)
+    for prefix in (sys.prefix, sys.exec_prefix, sys.base_prefix, sys.base_exec_prefix):
+        name(prefix, "<python>")
+    name(os.path.expanduser("~"), "~")
+    return tuple(sorted(found.items(), key=lambda pair: -len(pair[0])))
 
 
 def _read(pid: int, limits: SandboxLimits, result_r: int, out_r: int, started: float, result: bytearray,
