@@ -9,8 +9,12 @@ jail's namespaces (:mod:`lagrade.answer.jail.kernel`) and then only forks. A chi
 millisecond or two, not in the second an import of sympy takes.
 
 The grader talks to it over a socket pair in JSON (never pickle: nothing the zygote says is
-executed), passing each child's two pipe ends with ``SCM_RIGHTS``; the zygote forks the child and
-later reaps it for the grader, since only a parent can. In a PID namespace the zygote is its PID 1:
+executed), passing each child's two pipe ends and its job with ``SCM_RIGHTS``; the zygote forks the
+child and later reaps it for the grader, since only a parent can. The job (the answer's source,
+path, names and token) is a descriptor the zygote passes on unread and the child reads after the
+fork, so no answer's bytes are ever in the memory the next answers are forked from: an answer
+that searches its own memory finds no other student's file (issue 43). What the zygote keeps
+between answers is pids, uids, exit statuses and CPU times. In a PID namespace the zygote is its PID 1:
 when it dies, the kernel kills every child. It dies with its grader (``PR_SET_PDEATHSIG``) and
 when the socket closes.
 """
