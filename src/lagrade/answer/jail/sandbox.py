@@ -268,7 +268,6 @@ def _install_names() -> tuple[tuple[str, str], ...]:
     import mpmath
     import sympy
 
-    import lagrade
     from lagrade.answer.jail.child import secret_dirs
 
     found: dict[str, str] = {}
@@ -281,7 +280,8 @@ def _install_names() -> tuple[tuple[str, str], ...]:
 
     for secret in secret_dirs():
         name(secret, "<hidden>")
-    for module, label in ((lagrade, "<lagrade>"), (sympy, "<sympy>"), (mpmath, "<mpmath>")):
+    name(str(Path(__file__).resolve().parents[2]), "<lagrade>")  # the package: lagrade/answer/jail/sandbox.py
+    for module, label in ((sympy, "<sympy>"), (mpmath, "<mpmath>")):
         name(os.path.dirname(module.__file__ or ""), label)
     paths = sysconfig.get_paths()
     for key, label in (("purelib", "<site-packages>"), ("platlib", "<site-packages>"), ("stdlib", "<python>"),
