@@ -92,7 +92,8 @@ def test_a_class_graded_with_the_jail_alone_shows_no_student_another_ones_file(t
     text = memory_scan.marker()
     honest = (reference_dir() / "12.43" / "answer.py").read_text()
     for i in range(3):
-        for who, source in ((f"r{i}a-victim", memory_scan.victim(text, honest)), (f"r{i}b-scanner", memory_scan.scanner(text))):
+        for who, source in ((f"r{i}a-victim", memory_scan.victim(text, honest)),
+                            (f"r{i}b-scanner", memory_scan.scanner(text))):
             folder = tmp_path / "submissions" / who
             folder.mkdir(parents=True)
             (folder / "12.43.py").write_text(source)

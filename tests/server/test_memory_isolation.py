@@ -18,7 +18,8 @@ from lagrade.uses.server.app import create_app
 sys.path.insert(0, str(REPO / "tests"))
 import memory_scan  # noqa: E402
 
-pytestmark = [pytest.mark.slow, pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the OS jail is Linux's")]
+pytestmark = [pytest.mark.slow,
+              pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the OS jail is Linux's")]
 
 
 def test_no_attempt_finds_another_students_file_in_its_memory(tmp_path, monkeypatch):

@@ -37,7 +37,8 @@ import sys
 import sysconfig
 from collections.abc import Iterable, Sequence
 
-__all__ = ["LAYERS", "MINIMUM", "JAIL_UID_BASE", "JAIL_UID_BLOCK", "jail_uid", "enter_namespaces", "build_root", "confine", "jail_dirs"]
+__all__ = ["LAYERS", "MINIMUM", "JAIL_UID_BASE", "JAIL_UID_BLOCK", "jail_uid", "enter_namespaces", "build_root",
+           "confine", "jail_dirs"]
 
 LAYERS = ("uid", "mount", "pid", "network", "no_new_privs", "limits", "landlock", "seccomp")
 #: what a class may not be graded without (`lagrade grade` refuses otherwise): a view of the files

@@ -229,7 +229,8 @@ def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, toke
             return outcome("crashed", f"the answer was not run: {why}; please report it to your instructor")
         return outcome("crashed", f"the answer could not be run (the sandbox stopped with code {code} and no result)")
     values = {k: v for k, v in report.values.items() if k in wanted}
-    problems = [p.model_copy(update={"file": name, "message": neutral_paths(p.message, path)}) for p in report.problems[:50]]
+    problems = [p.model_copy(update={"file": name, "message": neutral_paths(p.message, path)})
+                for p in report.problems[:50]]
     return SandboxOutcome(values=values, problems=problems, stdout=stdout, status=report.status)
 
 
