@@ -11,6 +11,7 @@ world-readable file, seccomp alone does not stop reading one).
 
 from __future__ import annotations
 
+import errno
 import json
 import os
 import socket
@@ -197,3 +198,43 @@ def test_landlock_alone_grants_around_site_packages_and_secrets(tmp_path):
     grants = kernel.landlock_grants([str(stdlib), str(stdlib / "site-packages" / "sympy")],
                                   [str(stdlib / "site-packages"), str(stdlib / "secret")])
     assert grants == sorted([str(stdlib / "json"), str(stdlib / "os.py"), str(stdlib / "site-packages" / "sympy")])
+
+
+#: what an answer tries on its own output pipe: signal-driven I/O (a signal of its choosing sent by the
+#: kernel to a process of its choosing when the pipe changes), and two calls Python itself needs
+FCNTL_PROBE = """import fcntl, json, os, signal, struct
+seen = {}
+def attempt(name, call):
+    try:
+        call()
+        seen[name] = "done"
+    except OSError as exc:
+        seen[name] = os.strerror(exc.errno)
+attempt("F_SETOWN", lambda: fcntl.fcntl(1, fcntl.F_SETOWN, os.getpid()))
+attempt("F_SETOWN_EX", lambda: fcntl.fcntl(1, 15, struct.pack("ii", 1, os.getpid())))
+attempt("F_SETSIG", lambda: fcntl.fcntl(1, 10, signal.SIGUSR1))
+attempt("O_ASYNC", lambda: fcntl.fcntl(1, fcntl.F_SETFL, fcntl.fcntl(1, fcntl.F_GETFL) | os.O_ASYNC))
+attempt("F_GETFL", lambda: fcntl.fcntl(1, fcntl.F_GETFL))
+attempt("O_NONBLOCK", lambda: fcntl.fcntl(1, fcntl.F_SETFL, fcntl.fcntl(1, fcntl.F_GETFL) | os.O_NONBLOCK))
+attempt("dup", lambda: os.close(os.dup(1)))
+print(json.dumps(seen))
+L = 1
+"""
+
+
+@pytest.mark.parametrize("layers", [("seccomp",), kernel.LAYERS], ids=["seccomp", "every-layer"])
+def test_seccomp_refuses_signal_driven_io_on_the_answers_pipes(layers, tmp_path, no_tripwires):
+    """Issue 43, item 6: F_SETOWN, F_SETOWN_EX, F_SETSIG and O_ASYNC fail with EPERM (the filter's
+    answer to every call it refuses); reading the flags, O_NONBLOCK and dup still work."""
+    made = zygote.start(layers)
+    if "seccomp" not in made.active:
+        pytest.skip("seccomp is not available on this machine")
+    answer = tmp_path / "answer.py"
+    answer.write_text(FCNTL_PROBE)
+    out = run_answer_file(answer, ["L"], FAST)
+    assert out.status == "ok", (out.status, out.problems, out.stdout)
+    seen = json.loads(out.stdout.strip().splitlines()[-1])
+    signalling = ("F_SETOWN", "F_SETOWN_EX", "F_SETSIG", "O_ASYNC")
+    assert {k: seen[k] for k in signalling} == dict.fromkeys(signalling, os.strerror(errno.EPERM)), seen
+    kept = ("F_GETFL", "O_NONBLOCK", "dup")
+    assert {k: seen[k] for k in kept} == dict.fromkeys(kept, "done"), seen

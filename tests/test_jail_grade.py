@@ -5,6 +5,7 @@ zygote is started with a ``pyseccomp`` that cannot be imported, as on a machine 
 from __future__ import annotations
 
 import json
+import re
 import os
 import sqlite3
 import subprocess
@@ -76,3 +77,39 @@ def test_grade_refuses_without_the_jail_and_grades_when_told_the_files_are_trust
             (layers,), = con.execute("SELECT jail FROM submissions").fetchall()
             assert "seccomp" not in layers and "landlock" in layers
     assert score == max_score > 0
+
+
+@pytest.mark.slow
+def test_a_class_graded_with_the_jail_alone_shows_no_student_another_ones_file(tmp_path):
+    """Issue 43, item 1, end to end: one ``lagrade grade`` grader (the same one the course server's
+    queue runs, :class:`lagrade.uses.bulk.worker.GraderProcess`) with the tripwires off grades, in
+    folder order, three students whose files hold a unique line and, after each, a student whose
+    answer searches its own memory for that line: the search (whose control shows it reaches the
+    heap) finds it in none of the three rounds, so no student's feedback can quote another's file."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import memory_scan
+
+    text = memory_scan.marker()
+    honest = (reference_dir() / "12.43" / "answer.py").read_text()
+    for i in range(3):
+        for who, source in ((f"r{i}a-victim", memory_scan.victim(text, honest)),
+                            (f"r{i}b-scanner", memory_scan.scanner(text))):
+            folder = tmp_path / "submissions" / who
+            folder.mkdir(parents=True)
+            (folder / "12.43.py").write_text(source)
+    hw = tmp_path / "hw.toml"
+    hw.write_text('name = "hw"\n[[problems]]\nid = "12.43"\n')
+    db = tmp_path / "hw.sqlite"
+    tripwires_off = Path(__file__).resolve().parent / "security" / "tripwires_off"
+    env = {"PYTHONPATH": os.pathsep.join([str(tripwires_off), *[p for p in sys.path if p]])}
+    graded = _lagrade("grade", str(tmp_path / "submissions"), "-a", str(hw), "--db", str(db), "--no-progress",
+                      "--workers", "1", env=env)
+    assert graded.returncode == 0, graded.stderr
+    with sqlite3.connect(db) as con:
+        rows = dict(con.execute("SELECT student, problems FROM submissions ORDER BY student").fetchall())
+    assert len(rows) == 6, rows
+    for i in range(3):
+        (message,) = [str(p) for p in json.loads(rows[f"r{i}b-scanner"]) if "memory scan" in str(p)]
+        found, control = (int(n) for n in re.findall(r"(\d+) (?:found|control)", message))
+        assert control >= 1, f"the control failed: the search does not reach the heap ({message})"
+        assert found == 0, f"round {i}: {message}: the grader's zygote held the earlier student's file"

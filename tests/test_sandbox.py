@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import sys
 import time
 from pathlib import Path
 
@@ -296,3 +297,52 @@ def test_an_answer_never_waited_for_or_cut_off_leaves_no_pipe_open(tmp_path, mon
     del running
     gc.collect()
     assert _open_fds() == before
+
+
+def _install_paths() -> list[str]:
+    """Where the grader's files are: Python, its packages, sympy, lagrade and the hidden references."""
+    import sysconfig
+
+    from lagrade.problem.library import reference_dir
+
+    places = [sysconfig.get_paths()["stdlib"], sysconfig.get_paths()["purelib"], os.path.dirname(sp.__file__),
+              str(reference_dir()), sys.prefix]
+    return sorted({q for p in places for q in (p, os.path.realpath(p)) if len(Path(q).parts) > 2})
+
+
+def test_a_warning_shows_the_answer_by_its_name_not_the_graders_path(tmp_path):
+    """As shipped (the tripwires on): Python's own warning about the answer names it by its file
+    name, never by the folder the grader keeps it in."""
+    folder = tmp_path / "graders-private-folder"
+    folder.mkdir()
+    out = run_answer_file(write(folder, "L = 1\nif L is 1:\n    L = 2\n"), ["L"], FAST)
+    assert out.status == "ok" and "answer.py:2: SyntaxWarning" in out.stdout, out
+    assert str(folder) not in out.stdout and "graders-private-folder" not in out.stdout, out.stdout
+
+
+def test_refusals_and_permission_denied_never_show_the_install_path(tmp_path, monkeypatch):
+    """Issue 43, item 6: what the jail refuses (a write to sympy's own file, a read of the references)
+    comes back to the student with the install locations replaced by neutral names; so does what
+    the answer prints about them."""
+    from lagrade.problem.library import reference_dir
+
+    monkeypatch.setattr(sandbox, "TRIPWIRES", False)  # the OS jail's own refusals
+    source = ("import os, sympy\nprint('sympy is in', os.path.dirname(sympy.__file__))\n"
+              "try:\n    open(sympy.__file__, 'a')\nexcept OSError as exc:\n    print(exc)\n"
+              f"L = open({str(reference_dir() / '12.22' / 'answer.py')!r}).read()\n")
+    out = run_answer_file(write(tmp_path, source), ["L"], FAST)
+    said = out.stdout + "\n".join(p.message for p in out.problems)
+    assert out.status == "error" and "<hidden>/12.22/answer.py" in said and "<sympy>/__init__.py" in said, said
+    leaked = [p for p in _install_paths() if p in said]
+    assert not leaked, (leaked, said)
+
+
+def test_neutral_paths_names_each_place():
+    from lagrade.answer.jail.sandbox import neutral_paths
+    from lagrade.problem.library import reference_dir
+
+    sympy_dir = os.path.dirname(sp.__file__)
+    text = f"{sympy_dir}/core/expr.py:1: UserWarning; {reference_dir()}/12.22/answer.py; /srv/class/bob/12.22.py:3"
+    assert neutral_paths(text, "/srv/class/bob/12.22.py") == \
+        "<sympy>/core/expr.py:1: UserWarning; <hidden>/12.22/answer.py; 12.22.py:3"
+    assert neutral_paths("division by zero") == "division by zero"

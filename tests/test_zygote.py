@@ -14,9 +14,12 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.answer.jail import zygote
+from lagrade.answer.jail import kernel, sandbox, zygote
 from lagrade.answer.jail.rebuild import decode_value
 from lagrade.answer.jail.sandbox import SandboxLimits, run_answer_file, start_answer_file
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import memory_scan  # noqa: E402
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
 
@@ -92,6 +95,58 @@ def test_the_process_that_runs_answers_never_held_the_key(tmp_path):
         assert not _memory_holds(pid, secret_text), f"process {pid} holds the reference solution"
     running.wait()
     del kept
+
+
+@pytest.mark.parametrize("layers", [kernel.LAYERS, ("limits",)], ids=["every-layer", "limits-only"])
+def test_an_answer_finds_no_earlier_answer_in_its_memory(tmp_path, monkeypatch, layers):
+    """Issue 43, item 1: with the tripwires off (the OS jail alone), an answer that searches its own
+    memory for the text of the answer graded before it through the same zygote finds nothing, round
+    after round: the process it is forked from never held another answer's bytes. The control copy
+    it plants shows that the search reaches the heap, where a received source would lie."""
+    monkeypatch.setattr(sandbox, "TRIPWIRES", False)
+    zygote.start(layers).hello()
+    limits = SandboxLimits(cpu_seconds=20, wall_seconds=60, memory_mb=512)
+    for round_ in range(3):
+        text = memory_scan.marker()
+        earlier = run_answer_file(_answer(tmp_path, memory_scan.victim(text)), ["L"], limits)
+        assert earlier.status == "ok", earlier
+        out = run_answer_file(_answer(tmp_path, memory_scan.scanner(text)), ["found", "control"], limits)
+        assert out.status == "error" and "memory scan" in out.problems[0].message, out
+        found, control = decode_value(out.values["found"]), decode_value(out.values["control"])
+        assert control >= 1, f"the control failed: the search does not reach the heap ({out.problems})"
+        assert found == 0, f"round {round_}: {found} copies of the earlier answer's text in this answer's memory"
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="answers get uids of their own when lagrade runs as root")
+def test_two_graders_at_once_never_run_answers_as_the_same_uid(tmp_path, monkeypatch):
+    """Issue 43, item 6: two graders' zygotes, each running two answers at once, give the four
+    answers four uids (each zygote draws from a block of its own), none of them the grader's."""
+    monkeypatch.setattr(sandbox, "TRIPWIRES", False)
+    graders = [zygote.Zygote(), zygote.Zygote()]
+    try:
+        if any("uid" not in g.active for g in graders):
+            pytest.skip("the uid layer is not available here")
+        source = "import os, time\nL = os.getuid()\ntime.sleep(1)\n"  # all four alive at once
+        running = []
+        for i, grader in enumerate(graders * 2):
+            (tmp_path / str(i)).mkdir()
+            path = _answer(tmp_path / str(i), source)
+            finish, _abandon = sandbox._start_in_jail(grader, source, path, ["L"], FAST)
+            running.append(finish)
+        uids = [decode_value(finish().values["L"]) for finish in running]
+        assert len(set(uids)) == 4 and os.getuid() not in uids, uids
+    finally:
+        for grader in graders:
+            grader.close()
+
+
+def test_the_uid_blocks_of_live_zygotes_are_disjoint_and_valid():
+    blocks = {pid: {kernel.jail_uid(pid, n) for n in range(2 * kernel.JAIL_UID_BLOCK)} for pid in (1, 2, 4194303)}
+    assert all(len(uids) == kernel.JAIL_UID_BLOCK for uids in blocks.values())
+    assert not blocks[1] & blocks[2] and not blocks[2] & blocks[4194303]
+    assert max(blocks[4194303]) < 2**32 - 1 and min(blocks[1]) >= kernel.JAIL_UID_BASE
+    in_use = {kernel.jail_uid(7, n) for n in range(3, 6)}
+    assert zygote._free_uid(7, 3, in_use) == (6, kernel.jail_uid(7, 6))
 
 
 def test_the_zygote_keeps_none_of_the_graders_descriptors(tmp_path):

@@ -121,15 +121,20 @@ class _CpuLimit(BaseException):
 JAIL_FAILED = 72
 
 
-def child_main(child: dict[str, Any], workdir: str, result_w: int, out_w: int, *, layers: Sequence[str],
+def child_main(job_fd: int, workdir: str, result_w: int, out_w: int, *, layers: Sequence[str],
                uid: int | None, readable: Sequence[str], vm_size: int) -> None:
-    """The forked child: confine itself (`lagrade.answer.jail.kernel`), then run the answer. Never returns.
+    """The forked child: read its job, confine itself (`lagrade.answer.jail.kernel`), then run the
+    answer. Never returns.
 
-    If a layer the zygote reported active cannot be applied, the answer is not run at all."""
+    The job (source, path, names wanted, limits, token) is read from ``job_fd`` here, after the
+    fork: the zygote only passed the descriptor on, so the answer's bytes are in this process alone
+    and never in the memory later answers are forked from. If a layer the zygote reported active
+    cannot be applied, the answer is not run at all."""
     from lagrade.answer.jail import kernel
 
     code = 70
     try:
+        child = _read_job(job_fd)
         limits = SandboxLimits.model_validate(child["limits"])
         os.setsid()
         _setup_fds(result_w, out_w)
@@ -161,6 +166,18 @@ def child_main(child: dict[str, Any], workdir: str, result_w: int, out_w: int, *
             pass
     finally:
         os._exit(code)
+
+
+def _read_job(fd: int) -> dict[str, Any]:
+    """The job the grader wrote into ``fd`` (from its start), as JSON; the descriptor is closed."""
+    data, offset = bytearray(), 0
+    try:
+        while chunk := os.pread(fd, 1 << 20, offset):
+            data += chunk
+            offset += len(chunk)
+    finally:
+        os.close(fd)
+    return json.loads(data)
 
 
 def _setup_fds(result_w: int, out_w: int) -> None:

@@ -5,8 +5,8 @@ An answer file is hostile code, and Python cannot contain Python: the screen and
 defence. The defence is what the kernel enforces on the process that runs the file:
 
 ``uid``           another uid than the grader's (a fresh unprivileged uid per answer when lagrade
-                  runs as root; inside a user namespace otherwise): no file, process or cache of the
-                  grader's is its own.
+                  runs as root, from a block of the zygote's own: no two graders share one; inside
+                  a user namespace otherwise): no file, process or cache of the grader's is its own.
 ``mount``         a mount namespace whose root is an empty tmpfs holding, read-only, only Python's
                   standard library, sympy and mpmath, the system's shared libraries and /dev/null:
                   no problem files, references, cache, gradebook, home, shell or /proc.
@@ -16,8 +16,8 @@ defence. The defence is what the kernel enforces on the process that runs the fi
 ``limits``        CPU, address space, file size, descriptors, no new processes.
 ``landlock``      the kernel's file-access allowlist: read-only Python and system libraries, no
                   writes, no execution; holds without any privilege.
-``seccomp``       a system-call allowlist: no execve, ptrace, sockets, signals, mounts, or opening a
-                  file for writing.
+``seccomp``       a system-call allowlist: no execve, ptrace, sockets, signals, mounts, opening a
+                  file for writing, or signal-driven I/O (fcntl's F_SETOWN, F_SETSIG, O_ASYNC).
 
 The namespaces are entered once by the clean zygote (:mod:`lagrade.answer.jail.zygote`), which every
 child is forked from; the rest is applied by each child on itself before it reads the answer.
@@ -37,15 +37,21 @@ import sys
 import sysconfig
 from collections.abc import Iterable, Sequence
 
-__all__ = ["LAYERS", "MINIMUM", "JAIL_UID_BASE", "enter_namespaces", "build_root", "confine", "jail_dirs"]
+__all__ = ["LAYERS", "MINIMUM", "JAIL_UID_BASE", "JAIL_UID_BLOCK", "jail_uid", "enter_namespaces", "build_root",
+           "confine", "jail_dirs"]
 
 LAYERS = ("uid", "mount", "pid", "network", "no_new_privs", "limits", "landlock", "seccomp")
 #: what a class may not be graded without (`lagrade grade` refuses otherwise): a view of the files
 #: that holds no key (the mount namespace or Landlock), a system-call allowlist, and no privileges
 MINIMUM_FS = ("mount", "landlock")
 MINIMUM = ("seccomp", "no_new_privs", "limits")
-#: answers run as JAIL_UID_BASE + n, a uid no account has, one per answer
+#: answers run as uids from JAIL_UID_BASE up, which no account has: each zygote (one grader's tree of
+#: answers) draws from a block of JAIL_UID_BLOCK of its own, numbered by its first process's pid, so
+#: two graders at once never run answers as the same uid (`jail_uid`)
 JAIL_UID_BASE = 1_900_000_000
+JAIL_UID_BLOCK = 512
+#: Linux's largest pid (PID_MAX_LIMIT on 64 bits): the blocks end below 2**32 - 1, which is no uid
+_PID_MAX_LIMIT = 1 << 22
 #: where the per-answer working directories live inside the mount namespace
 JAIL_WORK = "/jail"
 
@@ -72,6 +78,12 @@ def _check(result: int, what: str) -> None:
     if result != 0:
         err = ctypes.get_errno()
         raise OSError(err, f"{what}: {os.strerror(err)}")
+
+
+def jail_uid(tree: int, n: int) -> int:
+    """The uid of the ``n``-th answer of the zygote whose first process is pid ``tree``: the block of
+    a live process's pid is no other live zygote's, and a zygote skips a uid still in use."""
+    return JAIL_UID_BASE + (tree % _PID_MAX_LIMIT) * JAIL_UID_BLOCK + n % JAIL_UID_BLOCK
 
 
 # =========================================================================== namespaces (zygote)
@@ -368,7 +380,7 @@ _WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_TRUNC | os.O_APPEND |
 _ALLOWED_SYSCALLS = (
     "read", "readv", "pread64", "write", "writev", "close", "fstat", "stat", "lstat", "newfstatat",
     "statx", "lseek", "getdents64", "getdents", "getcwd", "readlink", "readlinkat", "access",
-    "faccessat", "faccessat2", "fcntl", "dup", "dup2", "dup3", "mmap", "munmap", "mprotect", "mremap",
+    "faccessat", "faccessat2", "dup", "dup2", "dup3", "mmap", "munmap", "mprotect", "mremap",
     "madvise", "brk", "rt_sigaction", "rt_sigprocmask", "rt_sigreturn", "sigaltstack", "futex",
     "set_robust_list", "get_robust_list", "rseq", "set_tid_address", "getpid", "gettid", "getppid",
     "getuid", "geteuid", "getgid", "getegid", "getgroups", "getresuid", "getresgid", "getpgrp",
@@ -377,6 +389,16 @@ _ALLOWED_SYSCALLS = (
     "times", "getrlimit", "exit", "exit_group", "restart_syscall", "poll", "ppoll", "select",
     "pselect6", "getcpu", "membarrier",
 )
+
+#: fcntl commands an answer may use (`_FCNTL_ALLOWED`; F_SETFL without O_ASYNC): a descriptor's
+#: flags and duplicates. Refused: F_SETOWN, F_SETOWN_EX, F_SETSIG and O_ASYNC (signal-driven I/O: the
+#: kernel would send a signal of the answer's choosing to a process of its choosing whenever its
+#: pipes change, the grader reading them included), leases, notifications, locks, seals, pipe sizes
+_F_SETFL, _O_ASYNC = 4, getattr(os, "O_ASYNC", 0o20000)
+_FCNTL_ALLOWED = {
+    "F_DUPFD": 0, "F_GETFD": 1, "F_SETFD": 2, "F_GETFL": 3, "F_GETLK": 5, "F_GETOWN": 9, "F_GETSIG": 11,
+    "F_GETOWN_EX": 16, "F_GETLEASE": 1025, "F_DUPFD_CLOEXEC": 1030, "F_GETPIPE_SZ": 1032, "F_GET_SEALS": 1034,
+}
 
 
 def seccomp_available() -> str | None:
@@ -400,6 +422,13 @@ def _seccomp() -> str | None:
         for name in _ALLOWED_SYSCALLS:
             try:
                 f.add_rule(sc.ALLOW, name)
+            except (RuntimeError, OSError, ValueError):  # not a call of this architecture
+                pass
+        for call in ("fcntl", "fcntl64"):  # fcntl64: 32-bit machines' name for the same call
+            try:
+                for command in _FCNTL_ALLOWED.values():
+                    f.add_rule(sc.ALLOW, call, sc.Arg(1, sc.EQ, command))
+                f.add_rule(sc.ALLOW, call, sc.Arg(1, sc.EQ, _F_SETFL), sc.Arg(2, sc.MASKED_EQ, _O_ASYNC, 0))
             except (RuntimeError, OSError, ValueError):  # not a call of this architecture
                 pass
         read_only = sc.Arg(2, sc.MASKED_EQ, _WRITE_FLAGS, 0)

@@ -11,11 +11,13 @@ was not written by our child code.
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import secrets
 import selectors
 import signal
+import sys
 import time
 import weakref
 from collections.abc import Sequence
@@ -119,21 +121,23 @@ def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: Sand
 
     name = path.name
     token = secrets.token_hex(16)  # a report without it was not written by our child code
+    job = json.dumps({"source": source, "path": str(path), "name": name, "wanted": wanted,
+                      "limits": limits.model_dump(), "token": token, "tripwires": TRIPWIRES}).encode("utf-8")
+    job_fd = _job_file(job)
     result_r, result_w = os.pipe()
     out_r, out_w = os.pipe()
-    child = {"source": source, "path": str(path), "name": name, "wanted": wanted,
-             "limits": limits.model_dump(), "token": token, "tripwires": TRIPWIRES}
     spawned: dict[str, Any] = {}
 
     def spawn() -> None:
         try:
-            spawned["pid"] = zyg.spawn(child, (result_w, out_w))
+            spawned["pid"] = zyg.spawn((result_w, out_w, job_fd))
             spawned["at"] = time.monotonic()
         except Exception as exc:  # noqa: BLE001  (told to the student as a sandbox failure, in finish)
             spawned["error"] = exc if isinstance(exc, ZygoteError) else f"{type(exc).__name__}: {exc}"
         finally:
             os.close(result_w)
             os.close(out_w)
+            os.close(job_fd)
 
     thread = threading.Thread(target=spawn, name="lagrade-spawn", daemon=True)
     thread.start()
@@ -148,11 +152,12 @@ def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: Sand
         try:
             thread.join()
             if "pid" not in spawned:
+                why = neutral_paths(str(spawned.get("error")), path)
                 return SandboxOutcome(status="crashed", problems=[AnswerProblem(
-                    file=name, line=None, message=f"the sandbox could not run the answer ({spawned.get('error')}); "
+                    file=name, line=None, message=f"the sandbox could not run the answer ({why}); "
                                                   "please report it to your instructor")])
             return _collect(spawned["pid"], name, wanted, limits, token, result_r, out_r, spawned["at"], zyg.reap,
-                            zyg.lowered)
+                            zyg.lowered, path=path)
         finally:  # also when the grading's bound stops the reading: the pipes never outlive it
             close_pipes()
 
@@ -164,15 +169,40 @@ def _start_in_jail(zyg, source: str, path: Path, wanted: list[str], limits: Sand
     return finish, abandon
 
 
+def _job_file(job: bytes) -> int:
+    """A descriptor holding ``job`` (the answer's source, path, names, limits and token), read from
+    its start by the child after it is forked: the zygote passes it on without reading it, so no
+    answer's bytes are ever in the memory the next answers are forked from (issue 43). An anonymous
+    memory file where there is one (Linux), else an unlinked temporary file: the whole job is
+    written before the zygote is asked, so nothing waits on a reader."""
+    if hasattr(os, "memfd_create"):
+        fd = os.memfd_create("lagrade-answer", getattr(os, "MFD_CLOEXEC", 0))
+    else:
+        import tempfile
+
+        with tempfile.TemporaryFile() as fh:
+            fd = os.dup(fh.fileno())
+    try:
+        view = memoryview(job)
+        while view:
+            view = view[os.write(fd, view):]
+        os.lseek(fd, 0, os.SEEK_SET)
+    except BaseException:
+        os.close(fd)
+        raise
+    return fd
+
+
 def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, token: str, result_r: int, out_r: int,
-             started: float, reap=None, lowered=None) -> SandboxOutcome:
+             started: float, reap=None, lowered=None, path: Path | None = None) -> SandboxOutcome:
     """``lowered(pid)``: whether the child now runs at a lower priority than its zygote (then its
-    wall-clock bound is :data:`LOWERED_WALL_FACTOR` times as long)."""
+    wall-clock bound is :data:`LOWERED_WALL_FACTOR` times as long). Every text of the child's (its
+    output, its problems) has the grader's paths replaced (:func:`neutral_paths`)."""
     result, output = bytearray(), bytearray()
     timed_out, overflow, stretched = _read(pid, limits, result_r, out_r, started, result, output, lowered)
     wall = limits.wall_seconds * (LOWERED_WALL_FACTOR if stretched else 1)
     exit_status, cpu_used = (reap or reap_child)(pid, kill=timed_out or overflow, deadline=started + wall + 2)
-    stdout = output.decode("utf-8", "replace")[:STDOUT_KEEP]
+    stdout = neutral_paths(output.decode("utf-8", "replace"), path)[:STDOUT_KEEP]
 
     def outcome(status: str, message: str) -> SandboxOutcome:
         return SandboxOutcome(status=status, stdout=stdout, problems=[AnswerProblem(file=name, line=None, message=message)])
@@ -199,9 +229,69 @@ def _collect(pid: int, name: str, wanted: list[str], limits: SandboxLimits, toke
             return outcome("crashed", f"the answer was not run: {why}; please report it to your instructor")
         return outcome("crashed", f"the answer could not be run (the sandbox stopped with code {code} and no result)")
     values = {k: v for k, v in report.values.items() if k in wanted}
-    problems = [p.model_copy(update={"file": name}) for p in report.problems[:50]]
+    problems = [p.model_copy(update={"file": name, "message": neutral_paths(p.message, path)})
+                for p in report.problems[:50]]
     return SandboxOutcome(values=values, problems=problems, stdout=stdout, status=report.status)
 
+
+
+def neutral_paths(text: str, answer: Path | str | None = None) -> str:
+    """``text`` (what a student is shown of an answer's run: its output, an error, a refusal) with
+    the grader's paths replaced by neutral names: the answer's own path by its file name, and where
+    Python, the packages, lagrade and its hidden data are installed by ``<python>``,
+    ``<site-packages>``, ``<sympy>``, ``<lagrade>``, ``<hidden>``... A warning or a "Permission
+    denied" otherwise tells the student where the grader keeps its files."""
+    pairs = list(_install_names())
+    if answer is not None:
+        answer = Path(answer)
+        pairs = [(p, answer.name) for p in _spellings(str(answer))] + \
+            [(p, ".") for p in _spellings(str(answer.parent)) if _specific(p)] + pairs
+    for real, name in sorted(pairs, key=lambda pair: -len(pair[0])):
+        if real in text:
+            text = text.replace(real, name)
+    return text
+
+
+def _spellings(path: str) -> set[str]:
+    return {p for p in (path, os.path.abspath(path), os.path.realpath(path)) if p}
+
+
+def _specific(path: str) -> bool:
+    """A path naming an installation, not a system-wide folder (``/``, ``/usr``, ``/opt``, ``/usr/local``)."""
+    return len(Path(path).parts) > 2 and path.rstrip("/") not in ("/usr/local", "/usr/lib", "/usr/lib64", "/usr/share")
+
+
+@functools.cache
+def _install_names() -> tuple[tuple[str, str], ...]:
+    """(path, neutral name) for every place the grader's files are installed, longest first."""
+    import sysconfig
+
+    import mpmath
+    import sympy
+
+    from lagrade.answer.jail.child import secret_dirs
+
+    found: dict[str, str] = {}
+
+    def name(path: str | None, label: str) -> None:
+        if path:
+            for spelling in _spellings(path):
+                if _specific(spelling):
+                    found.setdefault(spelling.rstrip("/"), label)
+
+    for secret in secret_dirs():
+        name(secret, "<hidden>")
+    name(str(Path(__file__).resolve().parents[2]), "<lagrade>")  # the package: lagrade/answer/jail/sandbox.py
+    for module, label in ((sympy, "<sympy>"), (mpmath, "<mpmath>")):
+        name(os.path.dirname(module.__file__ or ""), label)
+    paths = sysconfig.get_paths()
+    for key, label in (("purelib", "<site-packages>"), ("platlib", "<site-packages>"), ("stdlib", "<python>"),
+                       ("platstdlib", "<python>")):
+        name(paths.get(key), label)
+    for prefix in (sys.prefix, sys.exec_prefix, sys.base_prefix, sys.base_exec_prefix):
+        name(prefix, "<python>")
+    name(os.path.expanduser("~"), "~")
+    return tuple(sorted(found.items(), key=lambda pair: -len(pair[0])))
 
 
 def _read(pid: int, limits: SandboxLimits, result_r: int, out_r: int, started: float, result: bytearray,

@@ -9,8 +9,12 @@ jail's namespaces (:mod:`lagrade.answer.jail.kernel`) and then only forks. A chi
 millisecond or two, not in the second an import of sympy takes.
 
 The grader talks to it over a socket pair in JSON (never pickle: nothing the zygote says is
-executed), passing each child's two pipe ends with ``SCM_RIGHTS``; the zygote forks the child and
-later reaps it for the grader, since only a parent can. In a PID namespace the zygote is its PID 1:
+executed), passing each child's two pipe ends and its job with ``SCM_RIGHTS``; the zygote forks the
+child and later reaps it for the grader, since only a parent can. The job (the answer's source,
+path, names and token) is a descriptor the zygote passes on unread and the child reads after the
+fork, so no answer's bytes are ever in the memory the next answers are forked from: an answer
+that searches its own memory finds no other student's file (issue 43). What the zygote keeps
+between answers is pids, uids, exit statuses and CPU times. In a PID namespace the zygote is its PID 1:
 when it dies, the kernel kills every child. It dies with its grader (``PR_SET_PDEATHSIG``) and
 when the socket closes.
 """
@@ -104,10 +108,11 @@ class Zygote:
             raise ZygoteError(reply["error"])
         return reply
 
-    def spawn(self, child: dict[str, Any], fds: tuple[int, int]) -> int:
-        """Fork a child running ``child`` (`lagrade.answer.jail.child.child_main`'s arguments), writing
-        its report and output to ``fds``; its pid (in the zygote's PID namespace)."""
-        return int(self.request({"op": "spawn", "child": child}, fds)["pid"])
+    def spawn(self, fds: tuple[int, int, int]) -> int:
+        """Fork a child that writes its report and output to ``fds[0]`` and ``fds[1]`` and reads its
+        job (`lagrade.answer.jail.child.child_main`) from ``fds[2]`` once forked; its pid (in the
+        zygote's PID namespace). The request itself says nothing about the answer."""
+        return int(self.request({"op": "spawn"}, fds)["pid"])
 
     def reap(self, pid: int, kill: bool, deadline: float) -> tuple[int, float]:
         """Wait for the child (killing it first if asked); its wait status and CPU seconds."""
@@ -203,6 +208,9 @@ def _recv(sock: socket.socket) -> tuple[Any, list[int]]:
 def _main(argv: list[str]) -> None:
     """``python -m lagrade.answer.jail.zygote FD LAYERS warm|cold STAGING``."""
     fd, wanted, warm, staging = int(argv[0]), set(filter(None, argv[1].split(","))), argv[2] == "warm", argv[3]
+    # numbers this zygote's block of uids: this process lives (in the grader's PID namespace, where no
+    # other live zygote has its pid) as long as any answer forked below it
+    tree = os.getpid()
     kernel.die_with_parent()
     sock = socket.socket(fileno=fd)
     from lagrade.answer.jail import child as child_code
@@ -244,7 +252,7 @@ def _main(argv: list[str]) -> None:
     # whole directories; without it, around them
     grants = allowed if "mount" in active else kernel.landlock_grants(allowed, [*hidden, *child_code.secret_dirs()])
     _send(sock, {"active": active, "inactive": inactive})
-    _serve(sock, active, grants, status_fd)
+    _serve(sock, active, grants, status_fd, tree)
 
 
 def _open_status() -> int | None:
@@ -266,10 +274,13 @@ def _vm_size(status_fd: int | None) -> int:
     return 0
 
 
-def _serve(sock: socket.socket, active: list[str], readable: list[str], status_fd: int | None) -> None:
+def _serve(sock: socket.socket, active: list[str], readable: list[str], status_fd: int | None, tree: int) -> None:
+    """Fork, reap and answer the grader until the socket closes. ``tree``: the pid that numbers this
+    zygote's block of uids (:func:`lagrade.answer.jail.kernel.jail_uid`)."""
     from lagrade.answer.jail import child as child_code
 
     workdirs: dict[int, str] = {}
+    uids: dict[int, int] = {}  # the uid of each child not yet reaped
     done: dict[int, tuple[int, float]] = {}  # reaped before the grader asked
     count = 0
     inside = "mount" in active
@@ -287,7 +298,7 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
     poller.register(wake_r, select.POLLIN)
     base_nice = os.getpriority(os.PRIO_PROCESS, 0)  # the children's, unless their coordinator lowers them
     while True:
-        _reap_finished(done, workdirs)
+        _reap_finished(done, workdirs, uids)
         ready = {fd for fd, _ in poller.poll()}
         if wake_r in ready:
             _drain(wake_r)
@@ -300,14 +311,18 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
         try:
             if request.get("op") == "spawn":
                 count += 1
-                uid = kernel.JAIL_UID_BASE + count % 1_000_000 if "uid" in active and as_root else None
+                uid = None
+                if "uid" in active and as_root:
+                    count, uid = _free_uid(tree, count, set(uids.values()))
                 workdir = f"{kernel.JAIL_WORK}/{count}" if inside else tempfile.mkdtemp(prefix="lagrade-answer-")
                 if inside:
                     os.mkdir(workdir, 0o700)
                 if uid is not None:
                     os.chown(workdir, uid, uid)
                 vm = _vm_size(status_fd)
-                result_w, out_w = fds
+                if len(fds) != 3:
+                    raise ValueError(f"a spawn needs 3 descriptors, got {len(fds)}")
+                result_w, out_w, job_fd = fds
                 pid = os.fork()
                 if pid == 0:  # the child: never returns
                     sock.close()
@@ -315,15 +330,18 @@ def _serve(sock: socket.socket, active: list[str], readable: list[str], status_f
                     signal.signal(signal.SIGCHLD, signal.SIG_DFL)
                     os.close(wake_r)
                     os.close(wake_w)
-                    child_code.child_main(request["child"], workdir, result_w, out_w,
+                    child_code.child_main(job_fd, workdir, result_w, out_w,
                                        layers=active, uid=uid, readable=readable, vm_size=vm)
                 workdirs[pid] = workdir
+                if uid is not None:
+                    uids[pid] = uid
                 reply: dict[str, Any] = {"pid": pid}
             elif request.get("op") == "reap":
                 pid = int(request["pid"])
                 status, cpu = done.pop(pid) if pid in done else child_code.reap_child(pid, bool(request["kill"]),
                                                                             float(request["deadline"]))
                 shutil.rmtree(workdirs.pop(pid, ""), ignore_errors=True) if pid in workdirs else None
+                uids.pop(pid, None)
                 reply = {"status": status, "cpu": cpu}
             elif request.get("op") == "lowered":
                 try:
@@ -349,7 +367,17 @@ def _drain(fd: int) -> None:
         pass
 
 
-def _reap_finished(done: dict[int, tuple[int, float]], workdirs: dict[int, str]) -> None:
+def _free_uid(tree: int, count: int, in_use: set[int]) -> tuple[int, int]:
+    """``(count, uid)``: the first uid of this zygote's block from the ``count``-th on that no child
+    alive has (a child not reaped 512 answers later keeps its uid to itself)."""
+    for n in range(count, count + kernel.JAIL_UID_BLOCK):
+        uid = kernel.jail_uid(tree, n)
+        if uid not in in_use:
+            return n, uid
+    raise OSError(f"all {kernel.JAIL_UID_BLOCK} uids of this grader's block are in use by running answers")
+
+
+def _reap_finished(done: dict[int, tuple[int, float]], workdirs: dict[int, str], uids: dict[int, int]) -> None:
     """Reap every child that has ended (a grading that ran out of time never asks), keeping its
     status for when the grader asks; called whenever SIGCHLD wakes the zygote."""
     while True:
@@ -361,6 +389,7 @@ def _reap_finished(done: dict[int, tuple[int, float]], workdirs: dict[int, str])
             return
         done[pid] = (status, usage.ru_utime + usage.ru_stime)
         shutil.rmtree(workdirs.pop(pid, ""), ignore_errors=True) if pid in workdirs else None
+        uids.pop(pid, None)
         while len(done) > _MAX_KEPT:
             del done[next(iter(done))]
 
