@@ -142,6 +142,9 @@ def run(m: Mutation, timeout: float, python: str) -> Outcome:
     if proc.returncode == 0:
         return Outcome(m, False, seconds, "every test passed")
     if proc.returncode == 1:
+        check = re.search(r"the integrator is broken, so the stability suite is not run:\n(.*)", proc.stdout)
+        if check:  # tests/stability/conftest.py's session check: every test of the suite errors with it
+            return Outcome(m, True, seconds, f"the session check: {check.group(1).strip()[:160]}")
         failed = re.findall(r"^(?:FAILED|ERROR) (\S+)", proc.stdout, flags=re.M)
         if failed:
             return Outcome(m, True, seconds, failed[0])
