@@ -114,13 +114,17 @@ def mutated_copy(m: Mutation, into: Path) -> Path:
     for name in BESIDE:
         if (ROOT / name).exists():
             (into / name).symlink_to(ROOT / name)
-    path = src / "lagrade" / "compare" / m.file
-    text = path.read_text(encoding="utf-8")
+    (src / "lagrade" / "compare" / m.file).write_text(mutated_text(m), encoding="utf-8")
+    return src
+
+
+def mutated_text(m: Mutation) -> str:
+    """The mutated file's text (the worktree's file read, never written)."""
+    text = (ROOT / "src" / "lagrade" / "compare" / m.file).read_text(encoding="utf-8")
     if text.count(m.old) != 1:
         raise SystemExit(f"{m.name}: the text to change occurs {text.count(m.old)} times in {m.file}, not once "
                          "(the source changed: update the mutation)")
-    path.write_text(text.replace(m.old, m.new), encoding="utf-8")
-    return src
+    return text.replace(m.old, m.new)
 
 
 def run(m: Mutation, timeout: float, python: str) -> Outcome:
