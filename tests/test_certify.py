@@ -55,6 +55,7 @@ def _blind_wrong():
 def test_every_sampled_state_rejection_of_the_blind_corpus_is_certified(path):
     res = lagrade.check(path.parent.name, path)
     for p in res.parts:
-        if p.verdict in ("incorrect", "partial") and p.method == "numeric" and p.certified is not None:
+        refusal = (p.review or "").startswith("no credit without a proof")  # certified false: nothing proved wrong
+        if p.verdict in ("incorrect", "partial") and p.method == "numeric" and p.certified is not None and not refusal:
             assert p.certified, f"{p.part}: {p.review}"
             assert re.search(r"excludes 0|a count|free of|finite in between|at the second|exactly 0|identically 0", p.certificate), p.certificate

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import os
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -150,10 +149,9 @@ def test_hostile_answers_are_contained(case, tmp_path, canary):
     pwn = tmp_path / f"pwned-{case}"
     source = source.replace("PWN", str(pwn)).replace("CANARY", str(canary))
     before = set(os.listdir("."))
-    zygote.current().hello()  # the bound is on the answer's run, not on starting the zygote (sympy's import)
-    start = time.monotonic()
     out = run_answer_file(write(tmp_path, source + "\nL = 1\n"), ["L", "x"], FAST)
-    assert time.monotonic() - start < 12
+    # what ended it is in the status and the message (a bound names itself: "ran longer than 8 s"), not in
+    # seconds measured here, which a loaded machine stretches (issue 45); a hang is pytest-timeout's
     assert out.status in statuses, (out.status, out.problems)
     assert out.problems and all(p.file == "answer.py" for p in out.problems)
     assert any(fragment in str(p) for p in out.problems), out.problems
@@ -178,11 +176,10 @@ def test_timeout_reports_loop_line(tmp_path):
 def test_wall_clock_timeout_kills_the_child(tmp_path):
     # CPU-idle waiting cannot be written without imports, so use a slow sympy call with a short wall
     slow = "from sympy import *\nx = Symbol('x')\nL = 1\nfor i in range(10**9):\n    y = expand((x + i)**2)\n"
-    zygote.current().hello()  # timed from here: the child's wall limit, not the zygote's start
-    start = time.monotonic()
     out = run_answer_file(write(tmp_path, slow), ["L"], SandboxLimits(cpu_seconds=30, wall_seconds=1.5))
-    assert time.monotonic() - start < 5
-    assert out.status == "timeout" and "ran longer than 1.5 s" in out.problems[0].message
+    # the wall bound, not the CPU bound (30 s: "ran longer than 30 s of CPU time"), ended it: the message
+    # says which, where seconds measured here would depend on the machine's load (issue 45)
+    assert out.status == "timeout" and out.problems[0].message.startswith("ran longer than 1.5 s ("), out.problems
 
 
 # --------------------------------------------------------------------------- layers behind the screen

@@ -60,3 +60,49 @@ def test_the_feedback_says_each_tolerance_beside_what_it_decides(preset):
     assert f"equal at every sampled state (within rtol {acc.sample_rtol:g})" in said, said
     if "trajectories agree" in said:
         assert f"compared within rtol {acc.compare_rtol:g}, atol {acc.compare_atol:g}" in said, said
+
+
+def _book():
+    """A gradebook of one student whose 12.14 L was accepted by the trajectories (the engine's words)."""
+    from lagrade.uses.bulk.assignment import parse_assignment, points
+    from lagrade.uses.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
+
+    a = parse_assignment({"name": "hw", "problems": [{"id": "12.14", "weight": 1}],
+                          "gradescope": {"output_format": "text"}}, "hw")
+    parts = [{"part": "L", "score": 1.0, "max_score": 1.0, "verdict": "correct", "feedback": ENGINE,
+              "answer_text": "x(t)**2"}]
+    grade = ProblemGrade("12.14", points(a.problems[0], parts, 1)[0], 1, True, "graded", parts=parts)
+    return Gradebook(a, [StudentGrade("ada", {"12.14": grade})], [], "test")
+
+
+def test_students_read_no_integrator_settings_in_gradescope_or_their_report_page(tmp_path):
+    """Reason (issue 45): "(DOP853 at rtol 1e-10) ... 1545 evaluations" reached Gradescope's results and
+    the HTML report's student pages; the student reads the words, the class page keeps the settings."""
+    from lagrade.uses.bulk.exports import gradescope_results
+    from lagrade.uses.bulk.html_report import write_report
+
+    book = _book()
+    output = gradescope_results(book, book.students[0])["tests"][0]["output"]
+    assert "your Lagrangian gives the same motion as the true one over t in [0, 2]" in output, output
+    assert "DOP853" not in output and "evaluations" not in output and "rtol" not in output
+    write_report(book, tmp_path)
+    page = (tmp_path / "students" / "ada.html").read_text()
+    assert "your Lagrangian gives the same motion" in page
+    assert "DOP853" not in page and "evaluations" not in page and "rtol" not in page
+
+
+def test_prairielearns_results_say_it_in_words(tmp_path, monkeypatch):
+    """PrairieLearn shows each test's ``message`` to the student: the words, not the settings."""
+    from lagrade.uses.deploy import prairielearn
+    from lagrade.verdicts.result import CheckResult, PartResult
+
+    result = CheckResult(problem="12.14", score=1.0, max_score=1.0, parts=[
+        PartResult(part="L", verdict="correct", score=1.0, max_score=1.0, method="trajectory", feedback=ENGINE)])
+    monkeypatch.setattr("lagrade.verdicts.grade.check", lambda *a, **k: result)
+    monkeypatch.setattr(prairielearn, "read_job", lambda root: (type("P", (), {"problem": "12.14",
+                                                                              "accuracy": "default"})(), tmp_path))
+    monkeypatch.setattr("lagrade.uses.deploy.jailcheck.decide",
+                        lambda: type("J", (), {"ok": True, "summary": lambda self: "test"})())
+    monkeypatch.setattr(prairielearn, "_image", lambda result: [])
+    message = prairielearn._grade_job(tmp_path)["tests"][0]["message"]
+    assert "your Lagrangian gives the same motion" in message and "DOP853" not in message, message

@@ -80,16 +80,19 @@ def test_a_right_answer_is_graded_within_5_s_behind_another_students_ten_loops(t
         graded(client, carol, client.post("/api/v1/problems/12.14/check", headers=carol,
                                            files={"file": ("answer.py", right + b"# warm")}).json()["submission_id"], 120)
         alice, bob = bearer(app, "alice"), bearer(app, "bob")
+        loops = []
         for i in range(10):
-            assert client.post("/api/v1/problems/12.14/check", headers=alice,
-                               files={"file": ("answer.py", LOOP + b"#%d" % i)}).status_code == 202
-        sent = time.monotonic()
+            r = client.post("/api/v1/problems/12.14/check", headers=alice, files={"file": ("answer.py", LOOP + b"#%d" % i)})
+            assert r.status_code == 202
+            loops.append(r.json()["submission_id"])
         sid = client.post("/api/v1/problems/12.14/check", headers=bob,
                           files={"file": ("answer.py", right)}).json()["submission_id"]
-        r = graded(client, bob, sid, 30)
-        waited = time.monotonic() - sent
+        r = graded(client, bob, sid, 120)
         assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
-        assert waited < 5, f"bob's right answer waited {waited:.1f} s behind alice's loops"
+        # the order, not the seconds (a loaded machine stretches those): alice holds one grader at a time, so
+        # at most her first loop can have ended before bob's answer; behind her queue, nine or ten would have
+        done = [s for s in loops if client.get(f"/api/v1/submissions/{s}", headers=alice).status_code != 202]
+        assert len(done) <= 1, f"bob's right answer waited behind {len(done)} of alice's loops"
 
 
 @pytest.mark.slow
@@ -104,18 +107,22 @@ def test_a_spare_grader_takes_a_right_answer_while_two_students_loops_hold_the_o
         for i in range(3):  # warm: each grader has graded once (bounded)
             graded(client, carol, client.post("/api/v1/problems/12.14/check", headers=carol, files={
                 "file": ("answer.py", right + b"# warm %d" % i)}).json()["submission_id"], 120)
+        loops = {}
         for who in ("alice", "dave"):
-            assert client.post("/api/v1/problems/12.14/check", headers=bearer(app, who),
-                               files={"file": ("answer.py", LOOP)}).status_code == 202
+            r = client.post("/api/v1/problems/12.14/check", headers=bearer(app, who), files={"file": ("answer.py", LOOP)})
+            assert r.status_code == 202
+            loops[who] = r.json()["submission_id"]
         time.sleep(0.5)
         bob = bearer(app, "bob")
-        sent = time.monotonic()
         sid = client.post("/api/v1/problems/12.14/check", headers=bob,
                           files={"file": ("answer.py", right)}).json()["submission_id"]
-        r = graded(client, bob, sid, 30)
-        waited = time.monotonic() - sent
+        r = graded(client, bob, sid, 120)
         assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
-        assert waited < 5, f"bob's right answer waited {waited:.1f} s behind two loops"
+        # the order, not the seconds (a loaded machine stretches those): both loops (10 s of CPU each) still
+        # hold their graders, so a spare one graded bob's answer; waiting for a grader, one loop would have ended
+        done = [who for who, s in loops.items()
+                if client.get(f"/api/v1/submissions/{s}", headers=bearer(app, who)).status_code != 202]
+        assert not done, f"bob's right answer waited for {done}'s loop"
 
 
 def test_checks_sent_at_once_are_counted_before_they_are_stored(quiet_app):

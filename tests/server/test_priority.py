@@ -177,12 +177,13 @@ def test_a_slow_grading_without_a_place_is_stopped_and_graded_once_later(tmp_pat
         assert list(queue.stopped) == [loops["dave"]], "the second loop was not the one stopped"
         assert loops["alice"] not in queue.stopped
         bob = bearer(app, "bob")
-        sent = time.monotonic()
         sid = client.post("/api/v1/problems/12.14/check", headers=bob,
                           files={"file": ("answer.py", right)}).json()["submission_id"]
-        r = graded(client, bob, sid, 60)
+        r = graded(client, bob, sid, 120)
         assert r.status_code == 200 and r.json()["score"] == r.json()["max_score"]
-        assert time.monotonic() - sent < 10, "the right answer waited for the loops"
+        # the order, not the seconds (a loaded machine stretches those): the stopped loop is still waiting
+        assert client.get(f"/api/v1/submissions/{loops['dave']}", headers=bearer(app, "dave")).status_code == 202, \
+            "the right answer waited for the stopped loop"
         assert len(queue.graders) <= 3
         for who, loop in loops.items():
             body = graded(client, bearer(app, who), loop, 150).json()

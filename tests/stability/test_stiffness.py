@@ -10,8 +10,6 @@ verdict for right and wrong answers.
 
 from __future__ import annotations
 
-import time
-
 import numpy as np
 import pytest
 import sympy as sp
@@ -44,19 +42,24 @@ def test_stiffness_is_detected_from_the_spectrum(km, stiff):
         assert st.oscillation == pytest.approx(np.sqrt(km), rel=0.05)
 
 
+#: evaluations of the rates the comparison took (measured 14 247 and 22 128, both runs and the
+#: detection), with half again for a change of the step control: the cost is bounded in evaluations,
+#: which are the same on any machine, never in seconds (a loaded machine failed a 30 s bound, issue 45)
+MEASURED_EVALS = {1e4: 14_247, 1e6: 22_128}
+
+
 @pytest.mark.parametrize("km", [1e4, 1e6])
 def test_a_correct_answer_agrees_within_a_bounded_number_of_evaluations(km):
     """Reason: the run must end within the budget (2 runs of max_rhs_evals plus the detection), with the
     method and window stated, and agree for a correct answer written in another form."""
     mech, P, y0 = _scene(km)
     acc = ACCURACY["default"]
-    start = time.perf_counter()
     cmp = compare_runs(rewritten_rates(mech, P, sp.expand), reference_rates(mech, P), y0, list("abcd"), 2.0, acc)
     assert cmp.agree, cmp.describe()
     assert cmp.rhs_evals <= 2 * acc.max_rhs_evals + 4 * y0.shape[0]
+    assert cmp.rhs_evals <= 1.5 * MEASURED_EVALS[km], cmp.rhs_evals
     if km > 1e4:
-        assert "stiff (fast oscillation" in cmp.describe()
-    assert time.perf_counter() - start < 30
+        assert "stiff (fast oscillation" in cmp.describe() and cmp.window < 2.0
 
 
 @pytest.mark.parametrize("km", [1e4, 1e6])

@@ -23,6 +23,7 @@ import io
 import json
 import re
 from collections.abc import Iterable
+from functools import lru_cache
 from pathlib import Path
 
 from lagrade.uses.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
@@ -189,6 +190,26 @@ def feedback_text(p: dict) -> str:
     return text
 
 
+def student_feedback(p: dict, pid: str, problems_dirs: tuple[Path, ...] = ()) -> str:
+    """What a student reads of a part's feedback (a student's report page, Gradescope's and PrairieLearn's
+    results): `feedback_text` with the evidence in words, the integrator's settings left out ("DOP853 at
+    rtol 1e-10 ... 116 evaluations" is the instructor's: the gradebook and the class page keep it)."""
+    from lagrade.verdicts.words import in_words
+
+    return in_words(feedback_text(p), _part_kinds(pid, problems_dirs).get(p.get("part", ""), ""))
+
+
+@lru_cache(maxsize=64)
+def _part_kinds(pid: str, problems_dirs: tuple[Path, ...] = ()) -> dict[str, str]:
+    """part name -> kind of problem ``pid`` ({} if its file cannot be read: the words then say "your answer")."""
+    try:
+        from lagrade.problem.library import load_problem
+
+        return {part.name: part.kind for part in load_problem(pid, problems_dirs).parts}
+    except Exception:  # noqa: BLE001
+        return {}
+
+
 _FUNCS = {"sin", "cos", "tan", "exp", "log", "sqrt", "sinh", "cosh", "tanh", "asin", "acos", "atan", "Abs"}
 
 
@@ -279,7 +300,7 @@ def gradescope_results(book: Gradebook, student: StudentGrade, *, execution_time
                   and g.parts[0]["verdict"] != "correct")
         earned_units = 0
         for m, (p, (earned, possible)) in enumerate(zip(g.parts, part_points(ap, g.parts, g.possible)), start=1):
-            text = say(feedback_text(p), fmt)
+            text = say(student_feedback(p, pid, problems_dirs), fmt)
             if shared and m > 1:
                 text = say(f"See {pid} {g.parts[0]['part']}.", fmt)
             if p.get("override"):

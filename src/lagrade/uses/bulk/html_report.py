@@ -20,7 +20,7 @@ from html import escape
 from pathlib import Path
 
 from lagrade.uses.bulk.assignment import part_points, part_weight
-from lagrade.uses.bulk.exports import feedback_text, file_jail, overrides_of
+from lagrade.uses.bulk.exports import file_jail, overrides_of, student_feedback
 from lagrade.uses.bulk.gradebook import Gradebook, ProblemGrade, StudentGrade
 from lagrade.uses.bulk.summary import common_mistakes, common_wrong_answers, failure_counts, problem_stats, to_review
 
@@ -330,7 +330,7 @@ def _problem_section(book: Gradebook, g: ProblemGrade, picture: str | None = Non
                "<th>your answer</th><th>feedback</th></tr></thead><tbody>")
     for p, (earned, possible) in zip(g.parts, part_points(ap, g.parts, g.possible)):
         o = p.get("override")
-        feedback = "" if shared or g.outcome == "failed" else escape(feedback_text(p))
+        feedback = "" if shared or g.outcome == "failed" else escape(student_feedback(p, g.problem))
         verdict, verdict_class = p["verdict"], p["verdict"]
         if o:
             feedback = (f"<span class=\"why\">Score set by your instructor: {escape(o['reason'])} (lagrade's "

@@ -144,7 +144,7 @@ def grade_job(root: Path = Path("/grade")) -> dict:
 
 
 def _grade_job(root: Path) -> dict:
-    from lagrade.uses.bulk.exports import feedback_text, readable
+    from lagrade.uses.bulk.exports import readable, student_feedback
     from lagrade.verdicts.grade import check
     from lagrade.problem.spec import SpecError
 
@@ -172,10 +172,11 @@ def _grade_job(root: Path) -> dict:
                              f"(sandbox {jail.summary()})")
     tests = []
     for p in result.parts:
-        shown = {"verdict": p.verdict, "feedback": p.feedback}
+        shown = {"part": p.part, "verdict": p.verdict, "feedback": p.feedback}
         out = f"Read as: {readable(p.read_as_text)}" if p.read_as_text else ""
         tests.append({"name": p.part, "description": p.verdict, "points": round(p.score, 6),
-                      "max_points": round(p.max_score, 6), "message": feedback_text(shown), "output": out})
+                      "max_points": round(p.max_score, 6), "message": student_feedback(shown, params.problem),
+                      "output": out})
     score = result.score / result.max_score if result.max_score else 0.0
     lines = [f"Problem {result.problem}: {result.score:g} / {result.max_score:g}"] + list(result.problems)
     lines.append(f"(sandbox {jail.summary()})")

@@ -326,11 +326,14 @@ def _constructs(expr: sp.Expr, part: Part, mech) -> list[str]:
         elif name in FRICTION_SWITCHES and allowed_vars and _friction_switch(e, allowed_vars, mech, part):
             stack.extend(_switch_parts(e))
         elif name in FRICTION_SWITCHES and e.free_symbols & {*mech.s.qd, *mech.s.p} and not allowed_vars:
-            notes.append(f"it uses {name} of a velocity: a velocity-dependent switch (dry friction) that this "
-                         "problem does not have")
+            notes.append(f"it uses {name} of a velocity: {UNDECLARED_FRICTION}")
         else:
             notes.append(_construct_words(e))
     return notes
+
+
+#: dry friction in a scene without it, in the screen's words (a refusal's, and a wrong eom's feedback)
+UNDECLARED_FRICTION = "a velocity-dependent switch (dry friction) that this problem does not have"
 
 
 def _construct_words(e: sp.Basic) -> str:
@@ -765,12 +768,30 @@ def _nothing(part: Part, feedback: str) -> PartResult:
                       feedback=feedback)
 
 
+#: what to do about each kind of reason a refusal gives, said only for the kinds it gives: an answer
+#: refused for a switch or a negligible part is often one formula with exact numbers already (issue 45)
+_ADVICE = (
+    (("is not exact", "not a simple fraction", "far from the size", "without being equal to it"),
+     "Write its numbers exactly (a fraction or a constant such as pi, not a decimal)"),
+    (("changes the whole by less than",), "If that part belongs in the answer, write it so that it matters; "
+                                          "if not, leave it out"),
+    (("Piecewise", "Heaviside", "which switches", "(a switch)", "folded into one period"),
+     "Write it as one formula, without cases, steps or absolute values"),
+)
+
+
+def _advice(why: str) -> str:
+    said = [advice for marks, advice in _ADVICE if any(mark in why for mark in marks)]
+    return "".join(f" {a}." for a in said)
+
+
 def refuse(part: Part, why: str, res: PartResult) -> PartResult:
     """No credit: the answer agreed where it was sampled, but is not of a kind for which that proves
-    equality, and no proof could be found."""
+    equality, and no proof could be found. Not certified (``certified`` false): nothing proved it wrong."""
     out = _nothing(part, f"Incorrect: {part.name} cannot be accepted: {why}. An answer like that can agree with the right "
                  "one at every state tried and still be wrong elsewhere, so it needs a proof of equality, and none "
-                   "was found. Write it as one formula, with exact numbers.")
+                   f"was found.{_advice(why)}")
+    out.certified = False
     out.review = (f"no credit without a proof ({why}); the checker's own verdict was {res.verdict} "
                   f"({res.score:g}/{res.max_score:g}, {res.method}): worth a look if the answer is an honest one")
     return out

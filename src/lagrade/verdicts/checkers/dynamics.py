@@ -296,7 +296,13 @@ def _with_trajectory_evidence(res: PartResult, traj: Comparison) -> PartResult:
 
 
 def _wrong(part: Part, fraction: float, message: str, traj: Comparison | None, credit=None) -> PartResult:
-    detail = f" {traj.describe()[0].upper()}{traj.describe()[1:]}." if traj is not None and not traj.agree else ""
+    detail = ""
+    if traj is not None and not traj.agree:
+        said = traj.describe()
+        friction = [w for why in admit.pending() for w in why.split("; ") if admit.UNDECLARED_FRICTION in w]
+        if traj.note and friction:  # a motion that sticks and chatters is followed by no integrator: what was
+            said = friction[0]      # found is the switch, as a refusal says it (issue 45)
+        detail = f" {said[0].upper()}{said[1:]}."
     res = graded(part, fraction, "numeric", f"{message}{detail}", credit)
     res._trajectory = getattr(traj, "case", None)
     return res
