@@ -95,15 +95,22 @@ def counted(pid: str) -> list[tuple[str, str, sp.Expr | None, bool]]:
             elif part.kind == "hamiltonian":  # compared by value (`leaks`' numeric H): the symbolic one is slow
                 out.append((f"{part.name} (H of '{key}')", key, None, False))
             elif part.kind not in NOT_VALUES and part.reference is not None and key == part.system:
-                ref = part.reference
-                items = ref.items() if isinstance(ref, dict) else enumerate(ref if isinstance(ref, list) else [ref])
-                for k, text in items:
-                    expr = _reference(part, mech, text)
-                    expr = expr.xreplace(mech.multiplier_exprs) if expr.free_symbols & set(mech.multipliers) else expr
-                    if expr.free_symbols & set(mech.s.qdd):
-                        expr = expr.xreplace(dict(zip(mech.s.qdd, mech.accelerations_symbolic)))
-                    out.append((f"{part.name}[{k}]" if isinstance(ref, dict) else part.name, key, expr, True))
+                refs = [(part.name, part.reference)] + [  # an accepted alternative (12.30's lam, the torque)
+                    (f"{part.name} as {a.name or 'an alternative'}", a.reference) for a in part.alternatives
+                    if a.reference is not None and (a.system is None or a.system == key)]
+                for name, ref in refs:
+                    _targets(out, part, name, key, mech, ref)
     return out
+
+
+def _targets(out: list, part, name: str, key: str, mech, ref) -> None:
+    items = ref.items() if isinstance(ref, dict) else enumerate(ref if isinstance(ref, list) else [ref])
+    for k, text in items:
+        expr = _reference(part, mech, text)
+        expr = expr.xreplace(mech.multiplier_exprs) if expr.free_symbols & set(mech.multipliers) else expr
+        if expr.free_symbols & set(mech.s.qdd):
+            expr = expr.xreplace(dict(zip(mech.s.qdd, mech.accelerations_symbolic)))
+        out.append((f"{name}[{k}]" if isinstance(ref, dict) else name, key, expr, True))
 
 
 def _state(mech) -> set[sp.Symbol]:
@@ -140,11 +147,12 @@ def statement_leaks(pid: str, text: str) -> list[str]:
     for part in problem.parts:  # the problem file's own text of a counted reference
         if part.extra or part.kind in NOT_VALUES or part.reference is None:
             continue
-        ref = part.reference
-        for raw in (ref.values() if isinstance(ref, dict) else ref if isinstance(ref, list) else [ref]):
-            raw = str(raw)
-            if not re.fullmatch(r"-?\w+", raw.strip()) and squash(raw) in flat.replace("'", "_d"):
-                found.append(f"prints the reference of {part.name} as written, {raw!r}")
+        # the part's reference, and each alternative's: an accepted answer printed is the part given away
+        for ref in (part.reference, *(a.reference for a in part.alternatives if a.reference is not None)):
+            for raw in (ref.values() if isinstance(ref, dict) else ref if isinstance(ref, list) else [ref]):
+                raw = str(raw)
+                if not re.fullmatch(r"-?\w+", raw.strip()) and squash(raw) in flat.replace("'", "_d"):
+                    found.append(f"prints the reference of {part.name} as written, {raw!r}")
     eqs = {part.system for part in problem.parts if not part.extra and part.kind == "eom"}
     for key, sec in secrets(pid).items():
         mech = sec.mech
