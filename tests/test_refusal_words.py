@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 
+import pytest
 import sympy as sp
 
 import lagrade
@@ -30,7 +31,25 @@ def _H(extra=0, factor=1):
     return factor * p ** 2 / (2 * m * ell ** 2) - m * g * ell * sp.cos(th) + extra
 
 
-def test_a_refusal_by_the_numbers_rule_says_certified_false_and_asks_for_exact_numbers():
+@pytest.fixture
+def without_the_exact_judge(monkeypatch):
+    """These answers are in the exact judge's class (`lagrade.compare.exact`), which proves them wrong
+    first (certified: true); the refusals' own words are tested with it off, as for an answer outside it."""
+    from lagrade.verdicts.checkers import dynamics, values
+
+    monkeypatch.setattr(dynamics, "_exactly_zero", lambda *a, **k: None)
+    monkeypatch.setattr(values, "exact_difference", lambda *a, **k: None)
+
+
+@pytest.mark.parametrize("H", [_H(factor=sp.Float("1.000000001")), _H(extra=g * sp.exp(-10 ** 4 * (
+        sp.Function("theta")(t) - sp.Rational(1, 3)) ** 2) / 1000)], ids=["inexact number", "narrow bump"])
+def test_the_exact_judge_proves_them_wrong_first_and_says_what_the_screen_saw(H):
+    got = _json_part(lagrade.check("12.43", H=H), "H")
+    assert got["verdict"] == "incorrect" and got["method"] == "exact" and got["certified"] is True, got
+    assert "exact arithmetic" in got["feedback"] and ("not exact" in got["feedback"] or "less than" in got["feedback"])
+
+
+def test_a_refusal_by_the_numbers_rule_says_certified_false_and_asks_for_exact_numbers(without_the_exact_judge):
     """12.43's H with 1.000000001 in it: refused by the numbers rule, whose ``certified`` was null."""
     got = _json_part(lagrade.check("12.43", H=_H(factor=sp.Float("1.000000001"))), "H")
     assert got["verdict"] == "incorrect" and "not exact" in got["feedback"], got["feedback"]
@@ -38,7 +57,7 @@ def test_a_refusal_by_the_numbers_rule_says_certified_false_and_asks_for_exact_n
     assert "exactly" in got["feedback"] and "one formula" not in got["feedback"], got["feedback"]
 
 
-def test_a_refusal_by_the_negligible_rule_says_certified_false_and_no_advice_about_numbers():
+def test_a_refusal_by_the_negligible_rule_says_certified_false_and_no_advice_about_numbers(without_the_exact_judge):
     """12.43's H with a narrow bump (issue 45's family): refused by the negligible-part rule; its numbers
     are exact and it is one formula."""
     th = sp.Function("theta")(t)
