@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 import lagrade
-from lagrade.verdicts.checkers import admit, dynamics, values
+from lagrade.compare import exact
+from lagrade.verdicts.checkers import admit, dynamics
 from lagrade.compare import trajectory as tr
 from lagrade.compare.trajectory import ACCURACY, Comparison, compare_runs, confirm_refutation
 from lagrade.verdicts.result import PartResult
@@ -38,8 +39,8 @@ def _motion_evidence_alone(request, monkeypatch):
     (`admit._negligible`) refuse first; these tests are about the evidence that decides where neither
     reaches (an answer outside the exact class), so both are switched off unless a test is marked."""
     if "exact_judge" not in request.keywords:
-        monkeypatch.setattr(dynamics, "_exactly_zero", lambda *a, **k: None)
-        monkeypatch.setattr(values, "exact_difference", lambda *a, **k: None)
+        monkeypatch.setattr(exact, "is_zero", lambda *a, **k: None)
+        monkeypatch.setattr(exact, "is_zero_given", lambda *a, **k: None)
     if "negligible_rule" not in request.keywords:
         monkeypatch.setattr(admit, "_negligible", lambda *a, **k: [])
 

@@ -35,10 +35,10 @@ def _H(extra=0, factor=1):
 def without_the_exact_judge(monkeypatch):
     """These answers are in the exact judge's class (`lagrade.compare.exact`), which proves them wrong
     first (certified: true); the refusals' own words are tested with it off, as for an answer outside it."""
-    from lagrade.verdicts.checkers import dynamics, values
+    from lagrade.compare import exact
 
-    monkeypatch.setattr(dynamics, "_exactly_zero", lambda *a, **k: None)
-    monkeypatch.setattr(values, "exact_difference", lambda *a, **k: None)
+    monkeypatch.setattr(exact, "is_zero", lambda *a, **k: None)
+    monkeypatch.setattr(exact, "is_zero_given", lambda *a, **k: None)
 
 
 @pytest.mark.parametrize("H", [_H(factor=sp.Float("1.000000001")), _H(extra=g * sp.exp(-10 ** 4 * (

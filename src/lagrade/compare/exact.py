@@ -262,7 +262,7 @@ def plan(expr: sp.Expr, domain=frozenset()) -> _Plan:
             p.symbols.add(e)
         elif e.is_Rational or e is sp.I or e is sp.pi or e is sp.E:
             pass
-        elif e.is_Add or e.is_Mul:
+        elif e.is_Add or e.is_Mul or isinstance(e, sp.Tuple):
             stack.extend(e.args)
         elif e.is_Pow:
             b, x = e.args
@@ -486,6 +486,70 @@ def is_zero(expr: sp.Expr, positive=frozenset(), seconds: float = 2.0, seed: int
         return None
 
 
+def _solve_mod(A: list[list[int]], b: list[int], p: int) -> list[int]:
+    """A u = b over F_p by Gaussian elimination; a singular A at this point is a `_Retry`."""
+    n = len(b)
+    M = [row[:] + [b[i]] for i, row in enumerate(A)]
+    for c in range(n):
+        pivot = next((r for r in range(c, n) if M[r][c] % p), None)
+        if pivot is None:
+            raise _Retry
+        M[c], M[pivot] = M[pivot], M[c]
+        inv = pow(M[c][c], -1, p)
+        M[c] = [x * inv % p for x in M[c]]
+        for r in range(n):
+            if r != c and M[r][c]:
+                f = M[r][c]
+                M[r] = [(x - f * y) % p for x, y in zip(M[r], M[c])]
+    return [M[r][n] for r in range(n)]
+
+
+def is_zero_given(exprs: list[sp.Expr], unknowns: list[sp.Symbol], A: list[list[sp.Expr]], b: list[sp.Expr],
+                  positive=frozenset(), seconds: float = 2.0, seed: int = 0) -> bool | None:
+    """Every one of ``exprs`` identically zero on the physical domain where the ``unknowns`` are what
+    ``A u = b`` makes them (the true accelerations: the mass matrix and the forces), without solving the
+    system symbolically: at each random point modulo p it is solved by elimination modulo p. True, False
+    (with its witness, `witness`), or None (outside the class, a singular system everywhere tried, time)."""
+    try:
+        with time_bound(seconds):
+            whole, plan_ = prepare(sp.Tuple(*exprs, *(x for row in A for x in row), *b), positive)
+            assumed = {s.name: s for s in whole.free_symbols if isinstance(s, sp.Symbol)}
+            unknown = [assumed.get(u.name, sp.Symbol(u.name, real=True)) for u in unknowns]
+            n, k = len(exprs), len(unknowns)
+            items = list(whole.args)
+            es, As, bs = items[:n], items[n:n + k * k], items[n + k * k:]
+            if any(f.has(*unknown) for f in plan_.degree):
+                raise OutsideClass("a root of an unknown")
+            rng = random.Random(seed)
+            for _ in range(POINTS):
+                p = _choose_prime(rng, plan_)
+                for _try in range(TRIES):
+                    try:
+                        ev = _Evaluator(plan_, p, rng)
+                        Am = [[ev.ev(As[i * k + j]) for j in range(k)] for i in range(k)]
+                        u = _solve_mod(Am, [ev.ev(x) for x in bs], p)
+                        ev2 = _Evaluator.__new__(_Evaluator)  # the same point, with the unknowns solved
+                        ev2.__dict__.update(ev.__dict__)
+                        ev2.memo = {}
+                        ev2.vars = {**ev.vars, **dict(zip(unknown, u))}
+                        values = [ev2.ev(e) for e in es]
+                    except _Retry:
+                        continue
+                    break
+                else:
+                    return None
+                bad = next((v for v in values if v != 0), None)
+                if bad is not None:
+                    _LAST[0] = Witness("", p, bad, {str(x): v for x, v in ev2.vars.items() if not isinstance(x, tuple)})
+                    return False
+            return True
+    except (OutsideClass, _OutOfTime):
+        return None
+    except (sp.PolynomialError, sp.polys.polyerrors.PolificationFailed, ValueError, TypeError,
+            ZeroDivisionError, RecursionError, KeyError):
+        return None
+
+
 def outside(expr: sp.Expr, positive=frozenset()) -> str | None:
     """Why ``expr`` is outside the exact class, or None when it is inside."""
     try:
@@ -577,9 +641,13 @@ def new_singularity(expr: sp.Expr, reference: sp.Expr, positive=frozenset(),
     """A factor of ``expr``'s denominator that vanishes somewhere on the physical domain and is none of
     ``reference``'s: ``right*(m1**2 - 2500)/((m1 - 50)*(m1 + 50))`` is undefined at m1 = 50. The witness
     is an exact root (``vanishes_in_domain``); None when there is none or the test gave up."""
+    assumed = _assume(expr, positive)
+    bases = {b for b, e in (x.as_base_exp() for x in assumed.atoms(sp.Pow)) if e.is_negative}
+    if all(b.is_positive or b.is_negative for b in bases):  # no denominator that can vanish: the common case
+        return None
     try:
         with time_bound(seconds):
-            den = sp.fraction(sp.together(_assume(expr, positive)))[1]
+            den = sp.fraction(sp.together(assumed))[1]
             if not den.free_symbols:
                 return None
             own = _factors(sp.fraction(sp.together(_assume(reference, positive)))[1])

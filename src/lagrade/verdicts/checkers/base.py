@@ -166,8 +166,8 @@ def _evaluate_derivatives(expr: sp.Basic) -> sp.Basic:
         return expr
 
 
-#: what the physical domain settles by itself, once the symbols carry their assumptions
-_DOMAIN_SETTLED = (sp.re, sp.im, sp.arg, sp.conjugate, sp.Abs, sp.sign, sp.Pow)
+#: what the physical domain settles by itself, once the symbols carry their assumptions (and roots)
+_DOMAIN_SETTLED = (sp.re, sp.im, sp.arg, sp.conjugate, sp.Abs, sp.sign)
 
 
 def _real_parts(expr: sp.Basic, domain=frozenset()) -> sp.Basic:
@@ -175,7 +175,7 @@ def _real_parts(expr: sp.Basic, domain=frozenset()) -> sp.Basic:
     ``sign(theta')`` where theta' > 0, ``sqrt(m1**2)``, ``Abs(tan(alpha))`` for 0 < alpha < pi/2: every
     quantity of a problem is real, with the sign its domain gives (`lagrade.compare.exact._assume`), so
     read them with symbols that say it, then go back to the engine's plain symbols."""
-    if not expr.has(*_DOMAIN_SETTLED):
+    if not expr.has(*_DOMAIN_SETTLED) and all(p.exp.is_Integer for p in expr.atoms(sp.Pow)):
         return expr
     assumed = exact._assume(expr, domain)
     if len(assumed.atoms(sp.Abs, sp.sign)) > len(expr.atoms(sp.Abs, sp.sign)):

@@ -218,17 +218,21 @@ EXACTLY_UNEQUAL = ("is not equal to the correct result: exact arithmetic shows a
 def exact_difference(ctx: Context, mech: Mechanics, student: sp.Expr, ref: sp.Expr) -> bool | None:
     """Is ``student - ref`` exactly zero on the physical domain (the true accelerations and multipliers
     substituted)? None when either is outside the exact class or the time ran out."""
-    if not hasattr(mech, "accelerations_symbolic"):
-        return None
     if isinstance(student, sp.Float) or isinstance(-student, sp.Float):  # a decimal for a pure number
         truth = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
         if truth is not None and not truth.free_symbols:
             return exact.agrees_to_digits(student, truth)
-    diff = _symbolic_reference(student - ref, mech, ctx.symbolic_seconds)
-    if diff is None:
-        return None
+    diff = student - ref
+    subs = {**mech.multiplier_exprs, **mech.constrained}  # each may bring in the others and q''
+    for _ in range(4):
+        if not diff.free_symbols & set(subs):
+            break
+        diff = diff.xreplace(subs)
     if diff.free_symbols & set(mech.s.p):  # momenta are dL/dq' at the state, as the sampled points take them
         diff = diff.xreplace({p: sp.diff(mech.L, v) for p, v in zip(mech.s.p, mech.s.qd)})
+    if diff.free_symbols & set(mech.s.qdd):  # the true accelerations: solved at each point, exactly
+        return exact.is_zero_given([diff], list(mech.s.qdd), [list(mech.mass.row(i)) for i in range(mech.mass.rows)],
+                                   list(mech.force), ctx.domain(mech), ctx.symbolic_seconds)
     return exact.is_zero(diff, ctx.domain(mech), ctx.symbolic_seconds)
 
 
