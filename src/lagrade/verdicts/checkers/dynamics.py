@@ -502,12 +502,12 @@ EXACT_WRONG = ("is not the true one: exact arithmetic shows a difference, even w
                "(a coefficient or a number in it is not the right one)")
 
 
-def _exactly_wrong(part: Part, what: str) -> PartResult:
+def _exactly_wrong(part: Part, what: str, after: str = "") -> PartResult:
     """No credit, decided in exact arithmetic; what the screen had flagged (an inexact number) is said too."""
     flagged = admit.pending()
     admit.proved()
     why = f" ({'; '.join(flagged)})" if flagged else ""
-    return graded(part, 0.0, "exact", f"Incorrect: {what} {EXACT_WRONG}{why}.")
+    return graded(part, 0.0, "exact", f"Incorrect: {what} {EXACT_WRONG}{why}.{after}")
 
 
 def _exactly_zero(exprs: list[sp.Expr], ctx: Context, mech: Mechanics, what: str = "equation {i}") -> bool | None:
@@ -1203,7 +1203,8 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
         decided = None if exact.outside(H_s, ctx.domain(mech)) else _exactly_hamiltonian(H_s, ctx, mech)
         if decided is not None:
             if not decided:
-                return _exactly_wrong(part, "your H (or it differs from the true one by more than a constant)")
+                return _exactly_wrong(part, "your H", " (H is the energy up to a constant only: a term in t, "
+                                                     "or one that changes where no state was tried, is not.)")
             admit.proved()
             return graded(part, 1.0, "exact", "correct: exactly the true H" + (
                 "" if np.all(np.abs(diff) <= tol) else ", up to a constant") + ".")
