@@ -13,7 +13,7 @@ _CACHE: str | None = None
 #: The slow tier (``pytest -m slow``; CI runs both tiers): what grades a class, builds a deployment,
 #: integrates for long, or re-grades a whole corpus end to end. The README's ``pytest`` keeps every
 #: unit test, the jail's tests, the problems, the reference solutions and the hand-written golden
-#: answers, and finishes in under 3 minutes on 2 cores (docs/performance.md). Beside this table,
+#: answers; the README says what it takes on 2 cores. Beside this table,
 #: test files mark their own slow tests (the red team, the server's end-to-end runs).
 SLOW = {
     "tests/bulk/": "a class graded end to end by grader processes (and Dask)",
