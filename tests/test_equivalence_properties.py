@@ -5,6 +5,7 @@ Property-based: hypothesis draws the total derivative, the factors, the order an
 
 from __future__ import annotations
 
+import pytest
 import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -85,3 +86,18 @@ def test_hamiltonian_plus_a_constant_is_correct_plus_a_function_of_time_is_not()
     assert lagrade.check("12.43", H=H + 3).verdicts()["H"] == "correct"
     assert lagrade.check("12.43", H=H + sp.sin(t) + 3).verdicts()["H"] == "incorrect"
     assert lagrade.check("12.43", H=2 * H).verdicts()["H"] == "incorrect"
+
+
+@pytest.mark.parametrize("accuracy", ["fast", "default", "strict"])
+def test_a_lagrangian_scaled_by_a_constant_near_1_is_a_scaled_lagrangian_under_every_preset(accuracy):
+    """L times (1000001/1000000)**(1/100) (1 + 1e-8, issue 42's example) gives the same motion and the wrong
+    momenta: the scaled-L credit, proved in exact arithmetic, whatever the preset's tolerance; never full."""
+    m1, m2, l1, l2 = sp.symbols("m1 m2 l1 l2", positive=True)
+    th1, th2 = sp.Function("theta1")(t), sp.Function("theta2")(t)
+    w1, w2 = th1.diff(t), th2.diff(t)
+    L = ((m1 + m2) / 2 * l1**2 * w1**2 + m2 / 2 * l2**2 * w2**2 + m2 * l1 * l2 * w1 * w2 * sp.cos(th1 - th2)
+         + (m1 + m2) * g * l1 * sp.cos(th1) + m2 * g * l2 * sp.cos(th2))
+    got = next(p for p in lagrade.check("12.14", accuracy=accuracy,
+                                        L=L * sp.Rational(1000001, 1000000) ** sp.Rational(1, 100)).parts if p.part == "L")
+    assert got.verdict == "partial" and got.score == 0.5 and "scaled" in got.feedback, got.feedback
+

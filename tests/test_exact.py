@@ -98,3 +98,15 @@ def test_a_pole_inside_the_domain_is_found_with_its_witness():
     assert new_singularity(right * (m1 ** 2 - 2500) / ((m1 - 50) * (m1 + 50)), right, {"m1", "g"}) == "m1 - 50"
     assert new_singularity(right * (m1 + 50) / (m1 + 50), right, {"m1", "g"}) is None
     assert new_singularity(right / (m1 + 3), right / (m1 + 3), {"m1", "g"}) is None
+
+
+def test_a_pole_hidden_in_a_function_is_found():
+    """tan(u)*cot(u) is 1 where both are defined, and undefined where sin(u) or cos(u) vanishes; an
+    exponent 1/(m1 - 50) is undefined at m1 = 50: found through the quantities they divide by."""
+    from lagrade.compare.exact import new_singularity
+
+    m1, x = sp.symbols("m1 x")
+    right = 4 * g / m1
+    assert new_singularity(right * sp.tan(x) * sp.cot(x), right, {"m1", "g", "x"}) in {"sin(x)", "cos(x)"}
+    assert new_singularity(right * sp.exp(1 / (m1 - 50) + g), right, {"m1", "g"}) == "m1 - 50"
+    assert new_singularity(right * sp.exp(1 / (m1 + 50)), right * sp.exp(1 / (m1 + 50)), {"m1", "g"}) is None

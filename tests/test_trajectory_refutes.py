@@ -53,6 +53,10 @@ def test_a_trajectory_beyond_tolerance_refutes(tmp_path, loose_samples, monkeypa
     # the exact re-check at the sampled states (`dynamics._exact_refutation`) refutes this answer before
     # any trajectory is compared, under every preset; off here, to test the trajectories' evidence alone
     monkeypatch.setattr(dynamics, "_exact_refutation", lambda *a, **k: None)
+    from lagrade.compare import exact  # the exact judge refutes it first: the trajectories' own evidence here
+
+    monkeypatch.setattr(exact, "is_zero", lambda *a, **k: None)
+    monkeypatch.setattr(exact, "is_zero_given", lambda *a, **k: None)
     for accuracy in ("strict-loose", "default-loose"):
         part = _eom_exact(lagrade.check("12.14", _perturbed_g(tmp_path, SMALL), accuracy=accuracy))
         assert part.verdict == "incorrect" and part.method == "trajectory", (accuracy, part.feedback)

@@ -62,7 +62,11 @@ def test_a_value_graded_again_gets_its_verdict_from_the_memo(pid, monkeypatch):
     graded, values = len(calls), sum(len(a.values) for a in answers)
     # a part with admissible formulations (issue 21) may be checked once per formulation
     assert graded >= values and memo.hits == 0
-    again = [grade_values(problem, LoadedAnswer(values={k: _anew(v) for k, v in a.values.items()}),
+    again = [grade_values(problem, LoadedAnswer(values={k: _anew(v) for k, v in a.values.items()},
+                                                # the name each value was bound to (12.30's lam for N)
+                                                # and what reading it said are the next file's too
+                                                routed=dict(a.routed), bound_as=dict(a.bound_as),
+                                                problems=list(a.problems)),
                           read_as=(), memo=memo) for a in answers]
     assert len(calls) == graded, f"graded again: {calls[graded:]}"
     assert memo.hits == values

@@ -621,8 +621,26 @@ def vanishes_in_domain(f: sp.Expr, domain=frozenset()) -> bool:
                 roots = sp.solveset(g, x, where)
                 if isinstance(roots, sp.FiniteSet) and len(roots) > 0 or roots.is_empty is False:
                     return True
+                if _sign_change(g, x, where):
+                    return True
         except Exception:  # noqa: BLE001  (sympy gave up: no witness)
             continue
+    return False
+
+
+def _sign_change(g: sp.Expr, x: sp.Symbol, where: sp.Interval) -> bool:
+    """A root by the intermediate value theorem: opposite signs at two exact points of the domain with
+    ``g`` continuous between them (cos(u) on u > 0, where solveset answers with a set it cannot count)."""
+    lo = where.start if where.start.is_finite else (where.end - 20 if where.end.is_finite else sp.Integer(-20))
+    hi = where.end if where.end.is_finite else lo + 20
+    points = [lo + (hi - lo) * sp.Rational(k, 64) for k in range(1, 64)]
+    signs = []
+    for a in points:
+        v = sp.N(g.xreplace({x: a}), 30)
+        signs.append((a, 0 if not v.is_Number else (1 if v > 0 else -1 if v < 0 else 0)))
+    for (a, sa), (b, sb) in zip(signs, signs[1:]):
+        if sa * sb < 0 and sp.calculus.util.continuous_domain(g, x, sp.Interval(a, b)) == sp.Interval(a, b):
+            return True
     return False
 
 
@@ -636,28 +654,38 @@ def _factors(e: sp.Expr) -> list[sp.Expr]:
     return [f for f, _ in sp.factor_list(e)[1] if f.free_symbols]
 
 
+#: the quantity each of these functions divides by: tan(a) = sin(a)/cos(a) has its poles where cos(a) = 0
+_DIVIDES_BY = {sp.tan: sp.cos, sp.sec: sp.cos, sp.cot: sp.sin, sp.csc: sp.sin,
+               sp.tanh: sp.cosh, sp.sech: sp.cosh, sp.coth: sp.sinh, sp.csch: sp.sinh}
+
+
+def poles(expr: sp.Expr) -> set[sp.Expr]:
+    """Every quantity ``expr`` divides by, anywhere in it (inside a function too: exp(1/(m1 - 50)), and
+    the cos(u) of a tan(u))."""
+    out = {b for b, e in (x.as_base_exp() for x in expr.atoms(sp.Pow)) if e.is_negative}
+    return out | {_DIVIDES_BY[type(n)](n.args[0]) for n in expr.atoms(sp.Function) if type(n) in _DIVIDES_BY}
+
+
 def new_singularity(expr: sp.Expr, reference: sp.Expr, positive=frozenset(),
                     seconds: float = 2.0) -> str | None:
-    """A factor of ``expr``'s denominator that vanishes somewhere on the physical domain and is none of
-    ``reference``'s: ``right*(m1**2 - 2500)/((m1 - 50)*(m1 + 50))`` is undefined at m1 = 50. The witness
-    is an exact root (``vanishes_in_domain``); None when there is none or the test gave up."""
-    assumed = _assume(expr, positive)
-    bases = {b for b, e in (x.as_base_exp() for x in assumed.atoms(sp.Pow)) if e.is_negative}
-    if all(b.is_positive or b.is_negative for b in bases):  # no denominator that can vanish: the common case
+    """A factor of a quantity ``expr`` divides by, anywhere in it, that vanishes somewhere on the physical
+    domain and is none of ``reference``'s: ``right*(m1**2 - 2500)/((m1 - 50)*(m1 + 50))`` is undefined at
+    m1 = 50, ``right*tan(u)*cot(u)`` at u = 0. The witness is an exact root (``vanishes_in_domain``);
+    None when there is none or the test gave up."""
+    bases = [b for b in poles(_assume(expr, positive)) if not (b.is_positive or b.is_negative)]
+    if not bases:  # no denominator that can vanish: the common case, at no factoring
         return None
     try:
         with time_bound(seconds):
-            den = sp.fraction(sp.together(assumed))[1]
-            if not den.free_symbols:
-                return None
-            own = _factors(sp.fraction(sp.together(_assume(reference, positive)))[1])
-            for f in _factors(den):
-                if sign_on_domain(f, positive) is not None or not f.is_polynomial():
-                    continue
-                if any(proportional(f, g, positive, seconds) for g in own):
-                    continue
-                if vanishes_in_domain(f, positive):
-                    return sp.sstr(f)
+            own = [f for b in poles(_assume(reference, positive)) for f in _factors(b)]
+            for b in bases:
+                for f in _factors(b):
+                    if f.is_positive or f.is_negative or sign_on_domain(f, positive) is not None:
+                        continue
+                    if any(proportional(f, g, positive, seconds) for g in own):
+                        continue
+                    if vanishes_in_domain(f, positive):
+                        return sp.sstr(f)
     except Exception:  # noqa: BLE001  (sympy failing to factor, or time: no witness)
         return None
     return None
@@ -681,6 +709,13 @@ def same_angle(a: sp.Expr, b: sp.Expr, positive=frozenset(), seconds: float = 2.
     if fa in _HALF and fb in _HALF:
         forward = sp.sin
     elif fa in _UPPER and fb in _UPPER:
+        forward = sp.cos
+    elif {fa, fb} <= _HALF | _UPPER:
+        # acos(sqrt(1 - v**2)) and asin(v): the asin is in [0, pi/2] where v >= 0 on the domain, and cos is
+        # one to one on [0, pi]; where v < 0 somewhere they differ there
+        half = ea if fa in _HALF else eb
+        if sign_on_domain(_assume(half.args[0], positive), positive) != 1:
+            return None
         forward = sp.cos
     else:
         return None

@@ -1,4 +1,5 @@
-# expect: L=correct, omega=correct, eom=partial
+# expect: L=correct, omega=correct, eom=incorrect
+# eom: equations with a factor that vanishes inside the physical domain determine no motion there: no credit (issue 42, item 4)
 from lagrade.answer import *
 
 m, k, l0, g = parameters("m k l0 g")

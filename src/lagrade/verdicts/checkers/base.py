@@ -56,12 +56,12 @@ class Context:
     def positive(self) -> set[str]:
         return {p.name for s in self.problem.systems for p in self.problem.parameters_of(s.key) if p.positive}
 
-    def domain(self, mech: Mechanics) -> dict[str, Domain]:
-        """The physical domain of every symbol of ``mech``'s system, by name (`Problem.domains`): what
-        the exact judge decides on (`lagrade.compare.exact`)."""
-        key = mech.system.key
+    def domain(self, mech: Mechanics, part: Part | None = None) -> dict[str, Domain]:
+        """The physical domain of every symbol of ``mech``'s system (and of ``part``'s own symbols, 12.23's
+        theta0), by name (`Problem.domains`): what the exact judge decides on (`lagrade.compare.exact`)."""
+        key = (mech.system.key, part.name if part is not None and part.symbols else None)
         if key not in self._domains:
-            self._domains[key] = {s.name: d for s, d in self.problem.domains(key).items()}
+            self._domains[key] = {s.name: d for s, d in self.problem.domains(*key).items()}
         return self._domains[key]
 
 

@@ -510,6 +510,19 @@ def _exactly_wrong(part: Part, what: str, after: str = "") -> PartResult:
     return graded(part, 0.0, "exact", f"Incorrect: {what} {EXACT_WRONG}{why}.{after}")
 
 
+def _exact_scale(rows: list[sp.Expr], truth: list[sp.Expr], ctx: Context, mech: Mechanics) -> sp.Expr | None:
+    """The constant c (a number) with rows = c * truth exactly (a scaled L's Lagrange equations), or None."""
+    try:
+        row, ref, a = next((r, t, a) for r, t in zip(rows, truth) for a in mech.s.qdd if sp.diff(t, a) != 0)
+        c = sp.cancel(sp.diff(row, a) / sp.diff(ref, a))
+        if c.free_symbols or c == 0 or c == 1:
+            return None
+        same = _exactly_zero([r - c * t for r, t in zip(rows, truth)], ctx, mech)
+        return c if same else None
+    except (StopIteration, Exception):  # noqa: BLE001  (no scale shown: refused as different)
+        return None
+
+
 def _exactly_zero(exprs: list[sp.Expr], ctx: Context, mech: Mechanics, what: str = "equation {i}") -> bool | None:
     """All of ``exprs`` identically zero on the physical domain (`lagrade.compare.exact`): True; one of
     them not: False, with its witness; None when one is outside the exact class and none is refuted.
@@ -569,14 +582,14 @@ def _row_factors(row: sp.Expr, qdd: list[sp.Symbol], positive: set[str]) -> tupl
     assumed = exact._assume(row, positive)
     acc = [exact._assume(a, positive) for a in qdd]
     coefficients = [c for a in acc if (c := sp.diff(assumed, a)) != 0]
-    bases = [b for b, e in (x.as_base_exp() for x in assumed.atoms(sp.Pow)) if e.is_negative]
+    bases = list(exact.poles(assumed))  # what it divides by, anywhere (a tan(u)'s cos(u) too)
     if coefficients and _definite(min(coefficients, key=sp.count_ops)) and all(_definite(b) for b in bases):
         return [], []
-    num, den = sp.fraction(sp.together(assumed))
+    num = sp.fraction(sp.together(assumed))[0]
     poly = sp.Poly(num, *acc)
     common = sp.gcd_list(poly.coeffs()) if len(poly.coeffs()) > 1 else poly.coeffs()[0]
     factors = [f for f, _ in sp.factor_list(common)[1] if f.free_symbols] if common.free_symbols else []
-    return factors, [f for f, _ in sp.factor_list(den)[1] if f.free_symbols] if den.free_symbols else []
+    return factors, [f for b in bases if b.free_symbols for f, _ in sp.factor_list(b)[1] if f.free_symbols]
 
 
 def _singular_factor(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -> str | None:
@@ -622,7 +635,14 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
             [a - b for a, b in zip(student_rows(), mech.EL)], ctx, mech, "your Lagrange equation {i} minus the true one")
         if decided is not None:
             if not decided:
-                return _exactly_wrong(part, "the Lagrange equations your L gives")
+                scale = _exact_scale(student_rows(), list(mech.EL), ctx, mech)
+                if scale is None:
+                    return _exactly_wrong(part, "the Lagrange equations your L gives")
+                admit.proved()
+                said = factor_text(float(scale)) or f"a constant factor ({in_kind(float(scale))})"
+                return graded(part, ctx.credit.scaled_lagrangian, "exact",
+                              f"your Lagrangian is the right one scaled by {said}: it gives the same equations of "
+                              "motion, but L = T - V fixes the scale (the momenta and H would be off by that factor).")
             admit.proved()
             return graded(part, 1.0, "exact", "correct: its Lagrange equations are exactly the true ones.")
         proof, traj = _confirm(

@@ -167,14 +167,14 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
     a = _evaluate(student, pts, syms)
     b = _evaluate(ref, pts, syms)
     flagged_before = admit.pending(student)
-    decided = exact_difference(ctx, mech, student, ref)
+    decided = exact_difference(ctx, mech, student, ref, part)
     if decided is None and student.has(sp.asin, sp.acos, sp.atan, sp.acsc, sp.asec):
         truth = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
-        decided = None if truth is None else exact.same_angle(student, truth, ctx.domain(mech), ctx.symbolic_seconds)
+        decided = None if truth is None else exact.same_angle(student, truth, ctx.domain(mech, part), ctx.symbolic_seconds)
     if decided is not None:
         if decided:
             admit.proved(student)
-            pole = exact.new_singularity(student, ref, ctx.domain(mech), ctx.symbolic_seconds)
+            pole = exact.new_singularity(student, ref, ctx.domain(mech, part), ctx.symbolic_seconds)
             if pole is None:
                 return True, "exact", ""
             return False, "exact", (f"is undefined where {pole} = 0, which lies within the problem's physical range "
@@ -215,7 +215,7 @@ EXACTLY_UNEQUAL = ("is not equal to the correct result: exact arithmetic shows a
                    "visible (a coefficient or a number in it is not the right one)")
 
 
-def exact_difference(ctx: Context, mech: Mechanics, student: sp.Expr, ref: sp.Expr) -> bool | None:
+def exact_difference(ctx: Context, mech: Mechanics, student: sp.Expr, ref: sp.Expr, part: Part | None = None) -> bool | None:
     """Is ``student - ref`` exactly zero on the physical domain (the true accelerations and multipliers
     substituted)? None when either is outside the exact class or the time ran out."""
     if isinstance(student, sp.Float) or isinstance(-student, sp.Float):  # a decimal for a pure number
@@ -232,8 +232,8 @@ def exact_difference(ctx: Context, mech: Mechanics, student: sp.Expr, ref: sp.Ex
         diff = diff.xreplace({p: sp.diff(mech.L, v) for p, v in zip(mech.s.p, mech.s.qd)})
     if diff.free_symbols & set(mech.s.qdd):  # the true accelerations: solved at each point, exactly
         return exact.is_zero_given([diff], list(mech.s.qdd), [list(mech.mass.row(i)) for i in range(mech.mass.rows)],
-                                   list(mech.force), ctx.domain(mech), ctx.symbolic_seconds)
-    return exact.is_zero(diff, ctx.domain(mech), ctx.symbolic_seconds)
+                                   list(mech.force), ctx.domain(mech, part), ctx.symbolic_seconds)
+    return exact.is_zero(diff, ctx.domain(mech, part), ctx.symbolic_seconds)
 
 
 def certify_difference(mech: Mechanics, student: sp.Expr, ref: sp.Expr, a: np.ndarray, b: np.ndarray,
