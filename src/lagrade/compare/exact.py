@@ -48,7 +48,7 @@ POINTS = 2
 #: operations beyond which an expression is not mapped (no answer the readers admit comes near)
 MAX_OPS = 20_000
 #: tries at a point before giving up (a denominator or a radicand that is not a residue there)
-TRIES = 60
+TRIES = 200
 
 _TRIG = {"sin", "cos", "tan", "cot", "sec", "csc"}
 _HYP = {"sinh", "cosh", "tanh", "coth", "sech", "csch"}
@@ -169,6 +169,9 @@ def _canonical_term(term: sp.Expr) -> tuple[sp.Rational, bool, sp.Expr]:
         imaginary = True
         c2, m = m.as_coeff_Mul()
         c = c * c2
+    roots = {x: sp.Pow(sp.factor(sp.together(x.base)), x.exp) for x in m.atoms(sp.Pow) if not x.exp.is_Integer}
+    if roots:  # sqrt(k*(1/m1 + 1/m2)) and sqrt(k*(m1 + m2)/(m1*m2)): one term, the radicand factored alike
+        m = m.xreplace(roots)
     if not m.free_symbols and m != 1:
         if m.has(sp.pi):
             raise OutsideClass("a rational multiple of pi in an angle that sympy does not evaluate")
@@ -350,8 +353,13 @@ class _Evaluator:
             self.vars[s] = rng.randrange(1, p)
         self.vars[sp.pi] = rng.randrange(1, p)
         self.roots: dict[sp.Basic, int] = {}
+        for f, q in plan_.degree.items():  # a symbol under a root is drawn as a power: its root is known
+            if f.is_Symbol:
+                w = rng.randrange(1, p)
+                self.vars[f], self.roots[f] = pow(w, q, p), w
         for f, q in sorted(plan_.degree.items(), key=lambda fq: sp.default_sort_key(fq[0])):
-            self.roots[f] = _root(self.ev(f), q, p, rng)
+            if f not in self.roots:
+                self.roots[f] = _root(self.ev(f), q, p, rng)
 
     def var(self, key: object) -> int:
         if key not in self.vars:
