@@ -85,8 +85,13 @@ def test_a_switch_proved_equal_is_accepted_as_proved():
 def test_an_imaginary_part_refutes_and_one_that_cancels_does_not():
     got = part(lagrade.check("12.22", a={**A, "m1": A["m1"] + 1000 * sp.I}), "a")
     assert got.verdict == "incorrect" and "imaginary" in got.feedback
-    two_cos = {**A, "m1": A["m1"] * (sp.exp(sp.I * m2) + sp.exp(-sp.I * m2)) / (2 * sp.cos(m2))}
-    assert part(lagrade.check("12.22", a=two_cos), "a").verdict == "correct"
+    # cos(m2)**2 + sin(m2)**2 written through exp(I*m2): the imaginary parts cancel, and nothing is divided
+    # by (dividing by cos(m2) would leave it undefined at m2 = pi/2, inside the domain: refused, issue 42)
+    one = (sp.exp(sp.I * m2) + sp.exp(-sp.I * m2)) ** 2 / 4 + sp.sin(m2) ** 2
+    assert part(lagrade.check("12.22", a={**A, "m1": A["m1"] * one}), "a").verdict == "correct"
+    pole = {**A, "m1": A["m1"] * (sp.exp(sp.I * m2) + sp.exp(-sp.I * m2)) / (2 * sp.cos(m2))}
+    got = part(lagrade.check("12.22", a=pole), "a")
+    assert got.verdict != "correct" and "cos(m2)" in got.feedback, got.feedback
 
 
 def test_inexact_numbers_earn_nothing_and_say_how_far_they_are():
