@@ -194,6 +194,8 @@ def test_a_real_separation_is_confirmed():
 
 
 @pytest.mark.slow
+@pytest.mark.exact_judge
+@pytest.mark.negligible_rule
 def test_the_evidence_benchmark_names_the_deciding_evidence():
     """benchmarks/evidence.py (the table of docs/numerics.md) on 12.14: every class is decided in
     exact arithmetic (the answers are in its class: issue 42), none is accepted."""

@@ -72,5 +72,5 @@ def test_every_readme_command_runs_as_it_says(tmp_path):
     assert (tmp_path / "answer.py").is_file() and (tmp_path / "out.png").stat().st_size > 1000
     assert (tmp_path / "hw7.sqlite").is_file() and (tmp_path / "report" / "index.html").is_file()
     assert "bob" in (tmp_path / "hw7-canvas.csv").read_text() or (tmp_path / "hw7-canvas.csv").stat().st_size > 0
-    assert (tmp_path / "autograder.zip").is_file() and (tmp_path / "pl" / "Dockerfile").is_file()
+    assert (tmp_path / "autograder.zip").is_file() and (tmp_path / "pl" / "image" / "Dockerfile").is_file()
     assert any((tmp_path / "imported").iterdir())
