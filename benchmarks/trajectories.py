@@ -54,12 +54,12 @@ import scipy
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from lagrade.compare.trajectory import ACCURACY, integrate
+from lagrade.compare.trajectory import ACCURACY
 from lagrade.verdicts.grade import references
 from lagrade.problem.library import load_problem
 from lagrade.numbers.numeric import backend
 from lagrade.compare.sampling import rng_for, sample_points, state_arrays
-from lagrade.compare.scene_model import scene_model
+from lagrade.compare.scene_model import scene_model, scene_motion
 
 PROBLEM = "12.14"
 SAMPLES = 201
@@ -99,8 +99,8 @@ def states(mech, K: int, seed: str = "bench"):
 def lagrade_run(mech, q, qd, params, tol: float):
     """lagrade's ``integrate`` on the K states at once, rtol = atol = tol, 201 output times."""
     acc = replace(ACCURACY["default"], rtol=tol, atol=tol, max_rhs_evals=10**7)
-    run = integrate(scene_model(mech).compiled_rates(params), np.concatenate([q, qd]), mech.system.horizon, acc,
-                    samples=SAMPLES, method="DOP853")
+    run = scene_motion(mech, np.concatenate([q, qd]), params, mech.system.horizon, acc, samples=SAMPLES,
+                       method="DOP853")   # the grading path's entry: the declared model and its events
     if not run.ok:
         raise RuntimeError(f"lagrade integrate failed at tol {tol:g}: {run.message}")
     return run

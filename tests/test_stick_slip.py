@@ -29,7 +29,7 @@ from lagrade.compare.trajectory import ACCURACY, integrate
 from lagrade.problem.library import load_problem
 from lagrade.numbers.numeric import CompiledRates
 from lagrade.derive.reference import Mechanics
-from lagrade.compare.scene_model import EquationsModel, SceneModel
+from lagrade.compare.scene_model import EquationsModel, PhaseModel, SceneModel
 
 PROBLEM = Path(__file__).parent / "problems_stick_slip" / "coulomb-spring.toml"
 
@@ -205,8 +205,8 @@ def test_the_lagrangian_part_runs_the_switching_model_too(monkeypatch):
 
 
 def test_hamiltons_equations_run_switching_models_in_q_and_p(monkeypatch):
-    """In (q, p) the friction's sign is one of p: the reference's H and the student's equations are both
-    switching models there, and the same Filippov rule makes both stick where the Lagrangian motion does."""
+    """In (q, p) the friction's sign is one of p: the scene's model read in (q, p) and the student's
+    equations are both switching models there, and the same Filippov rule makes both stick where the Lagrangian motion does."""
     px = sp.Function("p_x")(t)
     H = px**2 / (2 * m) + k * x**2 / 2
     right = [sp.Eq(x.diff(t), px / m), sp.Eq(px.diff(t), -k * x - mu * m * g * sp.sign(px / m))]
@@ -214,7 +214,7 @@ def test_hamiltons_equations_run_switching_models_in_q_and_p(monkeypatch):
     got = {p.part: p for p in lagrade.check(PROBLEM, H=H, hamilton=right).parts}
     assert got["H"].verdict == "correct" and got["hamilton"].verdict == "correct", got["hamilton"].feedback
     for student, reference, _, _, comparison in spy.calls:
-        assert isinstance(student, EquationsModel) and isinstance(reference, EquationsModel)
+        assert isinstance(student, EquationsModel) and isinstance(reference, PhaseModel)
         assert comparison.agree and student.switches["stick"] and reference.switches["stick"]
     wrong = [right[0], sp.Eq(px.diff(t), -k * x)]
     spy = Spy(monkeypatch)

@@ -369,12 +369,9 @@ class SceneModel(Switching):
             self._solve = compile_linear_solve([list(self.mech.mass.row(i)) for i in range(n)], force, self.args)
         return CompiledRates(self._solve, self.dim, params, copied=self.n, timed=self.time_arg)
 
-    def hamilton_rates(self, params: np.ndarray):
-        """``(t, Y) -> Y'`` of Hamilton's equations, Y = (q, p) of shape (2n, K): q' from p = dL/dq'
-        solved numerically (L is quadratic in the velocities), p' = dL/dq + Q. Compiled with the same
-        arguments as `compiled_rates` (no t for an autonomous scene): what grading integrates for a
-        Hamilton-form part of a scene without switching."""
-        n, s, L = self.n, self.mech.s, self.mech.L
+    def _hamilton_parts(self) -> tuple[Vectorized, Vectorized]:
+        """(q' from (q, p[, t], params); dL/dq + Q from (q, q'[, t], params)), compiled once."""
+        s, L = self.mech.s, self.mech.L
         if self._hamilton is None:
             zero = {v: 0 for v in s.qd}
             A = [[sp.diff(L, a, b).xreplace(zero) for b in s.qd] for a in s.qd]
@@ -382,10 +379,25 @@ class SceneModel(Switching):
             timed = [T] if self.time_arg else []
             self._hamilton = (compile_linear_solve(A, rhs, [*s.q, *s.p, *timed, *self.mech.params]),
                               compile_exprs([sp.diff(L, q) + Qi for q, Qi in zip(s.q, self.mech.Q)], self.args))
-        velocities, forces = self._hamilton
+        return self._hamilton
+
+    def phase_to_velocities(self, Y: np.ndarray, t, params: np.ndarray) -> np.ndarray:
+        """(q, p) of shape (2n, K) -> (q, q'): the velocities from p = dL/dq' (L quadratic in them)."""
+        n = self.n
+        velocities, _ = self._hamilton_parts()
+        timed = [np.full(Y.shape[1], t) if np.ndim(t) == 0 else t] if self.time_arg else []
+        return np.concatenate([Y[:n], velocities(*Y[:n], *Y[n:], *timed, *params)])
+
+    def hamilton_rates(self, params: np.ndarray):
+        """``(t, Y) -> Y'`` of Hamilton's equations, Y = (q, p) of shape (2n, K): q' from p = dL/dq'
+        solved numerically (L is quadratic in the velocities), p' = dL/dq + Q. Compiled with the same
+        arguments as `compiled_rates` (no t for an autonomous scene): what grading integrates for a
+        Hamilton-form part of a scene without switching (with `phase_events`)."""
+        n = self.n
+        velocities, forces = self._hamilton_parts()
 
         def f(t: float, Y: np.ndarray) -> np.ndarray:
-            timed = [np.full(Y.shape[1], t)] if self.time_arg else []
+            timed = [np.full(Y.shape[1], t) if np.ndim(t) == 0 else t] if self.time_arg else []
             qd = velocities(*Y[:n], *Y[n:], *timed, *params)
             return np.concatenate([qd, forces(*Y[:n], *qd, *timed, *params)])
 
@@ -416,6 +428,19 @@ class SceneModel(Switching):
                 out.append(BatchedEvent(f"contact lost ({name} = 0)", g, "stop", -1.0))
         return out
 
+    def phase_contact_events(self, y0: np.ndarray, params: np.ndarray) -> list[BatchedEvent]:
+        """`contact_events` for a run in (q, p): the same multipliers, at the velocities p gives. The
+        Hamilton path watches these, so its comparison ends where the contact is lost, as the
+        Lagrange path's does (the scene's model says nothing beyond)."""
+        if not self.machinery.contact_events:
+            return []
+        out = []
+        for ev in self.contact_events(self.phase_to_velocities(y0, 0.0, params), params):
+            def g(t, Y, fn=ev.fn):
+                return fn(t, self.phase_to_velocities(Y, t, params))
+            out.append(BatchedEvent(ev.name, g, ev.action, ev.direction))
+        return out
+
     def events(self, y0: np.ndarray, params: np.ndarray) -> list[BatchedEvent]:
         """Contact-loss and switching events of the declared effects (none for a smooth, bilateral scene)."""
         self.params = params
@@ -435,6 +460,59 @@ class SceneModel(Switching):
         return self._E(*Y[:n], *Y[n:], np.full(K, t) if np.ndim(t) == 0 else t, *params)[0]
 
 
+class PhaseModel(Switching):
+    """A switching scene's model in (q, p), for the Hamilton-form parts (an H, Hamilton's equations):
+    the same `SceneModel` (its declared forces, its branch variables, Filippov's rule), read in the
+    momenta. q' from p = dL/dq' (linear in p), p' = dL/dq + Q(q, q', t; sigma); the switching arguments
+    are the scene's, h(q, q'(q, p)), their gradient in (q, p) by the chain rule (dq'/dp exactly: q' is
+    linear in p; dq'/dq by central differences). Keeps branches: one per run, as `SceneModel`."""
+
+    def __init__(self, scene: SceneModel, params: np.ndarray):
+        self.scene = scene
+        self.n, self.dim = scene.n, scene.dim
+        self.params = scene.params = params
+        self.branches = scene.branches
+        self.switches = {"flip": [], "stick": [], "breakaway": []}
+        mech = scene.mech
+        self._dLdq = compile_exprs([sp.diff(mech.L, q) for q in mech.s.q], scene.args)
+
+    def _state(self, t, Y: np.ndarray) -> tuple[np.ndarray, list]:
+        X = self.scene.phase_to_velocities(Y, t, self.params)
+        return X, self.scene._argv(X[:self.n], X[self.n:], t, self.params)
+
+    def _field(self, t, Y, sigma):
+        X, argv = self._state(t, Y)
+        pd = np.asarray(self._dLdq(*argv), dtype=float).reshape(self.n, Y.shape[1])
+        if self.scene._Q is not None:
+            pd = pd + np.asarray(self.scene._Q(*argv, *sigma), dtype=float).reshape(self.n, Y.shape[1])
+        return np.concatenate([X[self.n:], pd])
+
+    def _switch_values(self, t, Y):
+        _, argv = self._state(t, Y)
+        return np.asarray(self.scene._switch(*argv), dtype=float).reshape(-1, Y.shape[1])
+
+    def _switch_gradient(self, t, Y):
+        n, K = self.n, Y.shape[1]
+        J = len(self.branches.args)
+        X, argv = self._state(t, Y)
+        G = np.asarray(self.scene._grad(*argv), dtype=float).reshape(J, 2 * n, K)   # in (q, q')
+        v = X[n:]
+        dv = np.empty((n, 2 * n, K))   # dq'_a / d(q, p)_b
+        for b in range(2 * n):
+            step = np.zeros_like(Y)
+            if b < n:
+                h = 1e-6 * (1.0 + np.abs(Y[b]))
+                step[b] = h
+                dv[:, b] = (self.scene.phase_to_velocities(Y + step, t, self.params)[n:]
+                            - self.scene.phase_to_velocities(Y - step, t, self.params)[n:]) / (2 * h)
+            else:
+                step[b] = 1.0
+                dv[:, b] = self.scene.phase_to_velocities(Y + step, t, self.params)[n:] - v
+        out = np.einsum("jak,abk->jbk", G[:, n:], dv)
+        out[:, :n] += G[:, :n]
+        return out
+
+
 def scene_model(mech: Mechanics, *, everything: bool = False) -> SceneModel:
     """The one model of ``mech`` grading integrates when the scene declares no switching (kept on the
     Mechanics: it holds no per-run state there, and compiling it is the slow part). A switching
@@ -443,6 +521,46 @@ def scene_model(mech: Mechanics, *, everything: bool = False) -> SceneModel:
     if everything not in kept:
         kept[everything] = SceneModel(mech, everything=everything)
     return kept[everything]
+
+
+def hamilton_rows(H: sp.Expr, mech: Mechanics) -> list[sp.Expr]:
+    """Hamilton's equations of ``H`` with the scene's forces, as rows ``q' - dH/dp``, ``p' + dH/dq - Q``
+    (the generalized forces Q(q, q', t) at q' = dH/dp)."""
+    qd = [sp.diff(H, p) for p in mech.s.p]
+    at_qd = dict(zip(mech.s.qd, qd))
+    pd = [-sp.diff(H, q) + sp.sympify(Qi).xreplace(at_qd) for q, Qi in zip(mech.s.q, mech.Q)]
+    return [*(u - e for u, e in zip(mech.s.qd, qd)), *(u - e for u, e in zip(mech.s.pd, pd))]
+
+
+def phase_form(mech: Mechanics) -> dict:
+    """`EquationsModel`'s keywords for rows in (q, p): unknowns (q', p'), state (q, p), the momenta
+    the velocities a switch reads."""
+    s = mech.s
+    return {"unknowns": [*s.qd, *s.pd], "state": [*s.q, *s.p], "velocities": set(s.p), "copied": False}
+
+
+def scene_motion(mech: Mechanics, y0: np.ndarray, params: np.ndarray, horizon: float, acc, *,
+                 t_eval: np.ndarray | None = None, t0: float = 0.0, method: str | None = None,
+                 samples: int = 201):
+    """The scene's own motion from ``y0`` = (q, q') (2n, K), ``params`` (P, K): the model of its declared
+    effects with its declared events (contact loss stops a trajectory, `Run.t_stop`; a friction sign
+    switches its branch), integrated by `integrate` at ``acc``. ``t0``: the time ``y0`` is given at (the
+    run's times are counted from it). What the motion parts (per-entry credit) and the numerical parts
+    compare with, and what the benchmarks time as "the grading path": the same model the eom, L and H
+    paths integrate. ``method``, ``samples``: as `integrate` takes them."""
+    from lagrade.compare.trajectory import integrate
+
+    switching = bool(machinery(mech).switching)
+    model = SceneModel(mech) if switching else scene_model(mech)
+    rates = model.rates(params) if switching else model.compiled_rates(params)
+    events = model.events(y0, params)
+    if t0:
+        base = rates
+        rates = lambda t, Y: base(t + t0, Y)  # noqa: E731
+        events = [BatchedEvent(e.name, lambda t, Y, fn=e.fn: fn(t + t0, Y), e.action, e.direction,
+                               None if e.on_event is None else (lambda k, t, y, h=e.on_event: h(k, t + t0, y)),
+                               e.active) for e in events]
+    return integrate(rates, y0, horizon, acc, events=events, t_eval=t_eval, method=method, samples=samples)
 
 
 class EquationsModel(Switching):

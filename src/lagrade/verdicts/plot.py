@@ -10,6 +10,7 @@ pixels only. The true motion is a curve to look at, never numbers: no text chunk
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -55,8 +56,13 @@ def _figure(result: CheckResult, yours_only: bool = False):
     cases = [(p, p._trajectory) for p in result.parts if p._trajectory is not None and p.verdict != "correct"]
     runs = []
     for part, case in cases:
-        ref = integrate(case.reference, case.y0, case.horizon, case.accuracy)
-        stu = integrate(case.student, case.y0, case.horizon, case.accuracy)
+        # the grading run's models with its events (contact loss ends a motion, friction switches)
+        case.arm()
+        ref = integrate(case.reference, case.y0, case.horizon, case.accuracy, events=case.events)
+        case.arm()
+        stu = integrate(case.student, case.y0, case.horizon, case.accuracy,
+                        events=case.events if case.student_events is None else case.student_events)
+        ref, stu = _until_stop(ref), _until_stop(stu)
         drawn = stu.y.shape[-1] == stu.t.size and stu.t.size > 1
         if drawn or not yours_only:
             runs.append((part, case, ref, stu, drawn))
@@ -89,6 +95,16 @@ def _figure(result: CheckResult, yours_only: bool = False):
         axes[row - 1, 0].set_xlabel("t")
     fig.tight_layout()
     return fig
+
+
+def _until_stop(run):
+    """The first trajectory's run up to where an event stopped it (contact lost): the scene's model
+    says nothing beyond, so nothing is drawn there."""
+    if run.t_stop is None or not run.t.size:
+        return run
+    n = min(run.t.size, run.y.shape[-1])
+    keep = run.t[:n] <= float(run.t_stop[0]) + 1e-12
+    return replace(run, t=run.t[:n][keep], y=run.y[..., :n][..., keep])
 
 
 def _separation(ref, stu, acc) -> float | None:

@@ -48,7 +48,7 @@ from lagrade.problem.library import load_problem
 from lagrade.numbers.numeric import CompiledRates, compile_numpy, is_machine_code
 from lagrade.derive.reference import Mechanics
 from lagrade.compare.sampling import rng_for, sample_points, state_arrays
-from lagrade.compare.scene_model import scene_model
+from lagrade.compare.scene_model import scene_model, scene_motion
 
 TOLERANCES = tuple(10.0 ** -e for e in range(3, 13))
 #: the grader's sample times per comparison (``integrate``'s default ``samples``)
@@ -291,8 +291,11 @@ def _grading_row(sc: Scene, acc: Accuracy, method: str, t_eval: np.ndarray, y_re
         n = len(sc.mech.names)
         exprs = sc.mech.accelerations_symbolic
         rates = CompiledRates(compile_numpy(exprs, sc.mech.args), 2 * n, rates.constants, copied=n)
-    run, secs, runs = _median_timed(lambda: integrate(rates, sc.y0, sc.horizon, acc, method=method,
-                                                      t_eval=t_eval), repeat)
+        run, secs, runs = _median_timed(lambda: integrate(rates, sc.y0, sc.horizon, acc, method=method,
+                                                          t_eval=t_eval), repeat)
+    else:   # the grading path's own entry: the scene's declared-effects model with its declared events
+        run, secs, runs = _median_timed(lambda: scene_motion(sc.mech, sc.y0, sc.params, sc.horizon, acc,
+                                                             method=method, t_eval=t_eval), repeat)
     err = _error(run.y, y_ref) if run.ok else float("inf")
     preset = acc.name if not numpy_stages and acc.name in PRESETS and ACCURACY[acc.name] is acc else ""
     return Row(f"{sc.pid}{sc.key}", "numpy" if numpy_stages else "grading", acc.rtol, err, secs, run.rhs_evals * K,
@@ -428,7 +431,23 @@ def markdown(sw: Sweep) -> str:
         name = f"**{r.label}**" if r.method == "grading" else r.label
         lines.append(f"| {name} | {r.tol:.0e} | {err} | {r.seconds * 1e3:.2f} | {r.rhs_evals} | "
                      f"{'' if ratio is None else f'{ratio:.2f}'} | {r.preset} |")
-    return "\n".join(lines)
+    return "\n".join(lines + ["", ranges(sw)])
+
+
+def ranges(sw: Sweep) -> str:
+    """What this run's times say, as measured ranges (a timing claim one run on one machine makes;
+    the evaluations and errors are the reproducible columns)."""
+    parts = []
+    for method in dict.fromkeys(r.method for r in by_tolerance(sw) if r.method != "grading"):
+        ratios = [x for r in sw.rows if r.method == method and (x := _ratio(sw, r)) is not None]
+        if ratios:
+            parts.append(f"{LABELS[method].split(' (')[0]} {min(ratios):.2f}-{max(ratios):.2f}x")
+    tols = sorted({r.tol for r in sw.rows}, reverse=True)
+    fastest = [t for t in tols if min(sw.rows, key=lambda r: (r.tol != t, r.seconds)).method == "grading"]
+    return (f"Measured in this run (times vary with the machine and its load; errors and evaluations do not): "
+            f"time / grading path over the tolerances {', '.join(parts)}; the grading path was the fastest "
+            f"series at {len(fastest)} of {len(tols)} tolerances"
+            + (f" ({', '.join(f'{t:.0e}' for t in fastest)})." if fastest else "."))
 
 
 CSV_COLUMNS = ("scene", "method", "label", "tol", "error", "seconds", "rhs_evals", "calls", "ok", "preset",

@@ -10,7 +10,7 @@ proof gives up; a wrong one is refuted by the states and explained by the trajec
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import sympy as sp
@@ -33,6 +33,7 @@ from lagrade.compare import exact
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, proves_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs, confirm_refutation
 from lagrade.derive.effects import machinery
+from lagrade.compare.scene_model import hamilton_rows
 from lagrade.numbers.numeric import (
     CompiledRates,
     Vectorized,
@@ -81,12 +82,11 @@ def _trajectory_lagrange(ctx: Context, mech: Mechanics, part: Part, student_acc:
     comparison = compare_runs(run.student, run.reference, run.y0, run.labels, mech.system.horizon, ctx.accuracy,
                               events=run.events, student_events=run.student_events, reference_key=run.key,
                               store=mech.runs)
-    comparison.confirm = lambda: confirm_refutation(comparison, run.student, run.reference, run.y0, ctx.accuracy,
-                                                    run.events, run.student_events)
-    stu, ref = run.student, run.reference
-    if run.switching:   # a picture integrates without events: the exact laws, not branches left by the run
-        stu, ref = stu.exact, ref.exact
-    comparison.case = TrajectoryCase(stu, ref, run.y0, run.labels, mech.system.horizon, ctx.accuracy)
+    arm = _rearm([run.student, run.reference] if run.switching else [], run.y0)
+    comparison.confirm = lambda: (arm(), confirm_refutation(comparison, run.student, run.reference, run.y0,
+                                                            ctx.accuracy, run.events, run.student_events))
+    comparison.case = TrajectoryCase(run.student, run.reference, run.y0, run.labels, mech.system.horizon,
+                                     ctx.accuracy, run.events, run.student_events, arm)
     return comparison
 
 
@@ -163,44 +163,51 @@ def _trajectory_hamilton(ctx: Context, mech: Mechanics, part: Part, student_rate
     labels = [*mech.names, *(f"p_{x}" for x in mech.names)]
     y0 = np.concatenate([q, p])
     constants = np.concatenate([params, extra])
-    models = _hamilton_switching(ctx, mech, part, student_rows, constants, y0) \
+    from lagrade.compare.scene_model import scene_model
+
+    model = scene_model(mech)
+    # the scene's contact loss, watched in (q, p): the comparison ends where the model does
+    contact = model.phase_contact_events(y0, params)
+    models = _hamilton_switching(ctx, mech, part, student_rows, constants, y0, params) \
         if student_rows is not None and machinery(mech).switching else None
     if models is not None:
         stu, ref, events, stu_events = models
+        events, stu_events = contact + events, contact + stu_events
         key = ("hamilton-switching", tuple(part.symbols))
     else:
-        from lagrade.compare.scene_model import scene_model
-
-        ref = scene_model(mech).hamilton_rates(params)
+        ref = model.hamilton_rates(params)
         stu = CompiledRates(student_rates(), 2 * n, constants)
-        events, stu_events, key = [], None, ("hamilton", tuple(part.symbols))
+        events, stu_events, key = contact, None, ("hamilton", tuple(part.symbols))
     comparison = compare_runs(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy, events=events,
                               student_events=stu_events, reference_key=key, store=mech.runs)
-    comparison.confirm = lambda stu=stu, ref=ref: confirm_refutation(comparison, stu, ref, y0, ctx.accuracy, events,
-                                                                      stu_events)
-    if models is not None:   # a picture integrates without events: the exact laws
-        stu, ref = stu.exact, ref.exact
-    comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy)
+    arm = _rearm([stu, ref] if models is not None else [], y0)
+    comparison.confirm = lambda stu=stu, ref=ref: (arm(), confirm_refutation(comparison, stu, ref, y0, ctx.accuracy,
+                                                                              events, stu_events))
+    comparison.case = TrajectoryCase(stu, ref, y0, labels, mech.system.horizon, ctx.accuracy, events,
+                                     stu_events, arm)
     return comparison
 
 
-def _hamilton_switching(ctx: Context, mech: Mechanics, part: Part, student_rows: Callable[[], list[sp.Expr]],
-                        constants: np.ndarray, y0: np.ndarray):
-    """Hamilton's equations of the reference H and the student's, as switching models in (q, p) built
-    the same way (the friction's sign is one of p there), each with its own events; None when the
-    reference H cannot be had in time (then the generic path, as before)."""
-    from lagrade.compare.scene_model import EquationsModel
+def _rearm(models: list, y0: np.ndarray) -> Callable[[], None]:
+    """Put switching models back on the branches of ``y0`` before a run again (the confirmation at a
+    tighter tolerance, the picture): a run leaves each on the branch its motion ended on."""
+    def arm() -> None:
+        for m in models:
+            m.arm(y0)
+    return arm
 
-    try:
-        with time_bound(ctx.symbolic_seconds):
-            H_ref = mech.hamiltonian_symbolic
-    except _OutOfTime:
-        return None
+
+def _hamilton_switching(ctx: Context, mech: Mechanics, part: Part, student_rows: Callable[[], list[sp.Expr]],
+                        constants: np.ndarray, y0: np.ndarray, params: np.ndarray):
+    """The scene's switching model read in (q, p) (`PhaseModel`: its declared forces and branches) and
+    the student's Hamilton's equations as a switching model built the same way (the friction's sign is
+    one of p there), each with its own switching events."""
+    from lagrade.compare.scene_model import EquationsModel, PhaseModel, SceneModel, phase_form
+
     s = mech.s
     args = [*s.q, *s.p, T, *mech.params, *(sp.Symbol(x) for x in part.symbols)]
-    form = {"unknowns": [*s.qd, *s.pd], "state": [*s.q, *s.p], "velocities": set(s.p), "copied": False}
-    ref = EquationsModel(hamilton_rows(H_ref, mech), mech, args, constants, **form)
-    stu = EquationsModel(student_rows(), mech, args, constants, **form)
+    ref = PhaseModel(SceneModel(mech), params)
+    stu = EquationsModel(student_rows(), mech, args, constants, **phase_form(mech))
     return stu, ref, ref.switching_events(y0), stu.switching_events(y0)
 
 
@@ -214,6 +221,11 @@ class TrajectoryCase:
     labels: list[str]
     horizon: float
     accuracy: object
+    #: the grading run's events (contact loss, switching), and the student's when they differ
+    events: list = field(default_factory=list)
+    student_events: list | None = None
+    #: puts switching models back on the branches of y0 before they are run again
+    arm: Callable[[], None] = lambda: None
 
 
 def _cost(traj: Comparison) -> str:
@@ -1267,15 +1279,6 @@ def _has_velocity(value: object, mech: Mechanics) -> bool:
     return any(isinstance(d, sp.Derivative) for d in value.atoms(sp.Derivative)) or any(
         s.name in {f"{n}_d" for n in mech.names} | {f"{n}dot" for n in mech.names} for s in value.free_symbols
         if isinstance(s, sp.Symbol))
-
-
-def hamilton_rows(H: sp.Expr, mech: Mechanics) -> list[sp.Expr]:
-    """Hamilton's equations of ``H`` with the scene's forces, as rows ``q' - dH/dp``, ``p' + dH/dq - Q``
-    (the generalized forces Q(q, q', t) at q' = dH/dp)."""
-    qd = [sp.diff(H, p) for p in mech.s.p]
-    at_qd = dict(zip(mech.s.qd, qd))
-    pd = [-sp.diff(H, q) + sp.sympify(Qi).xreplace(at_qd) for q, Qi in zip(mech.s.q, mech.Q)]
-    return [*(u - e for u, e in zip(mech.s.qd, qd)), *(u - e for u, e in zip(mech.s.pd, pd))]
 
 
 def _hamiltonian_rates(H: sp.Expr, mech: Mechanics, part: Part):

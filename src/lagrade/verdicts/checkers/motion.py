@@ -16,6 +16,7 @@ from lagrade.verdicts.checkers.base import (
     surplus,
 )
 from lagrade.compare.certify import Certificate, certify, outside_span
+from lagrade.compare.trajectory import Accuracy
 from lagrade.numbers.numeric import evaluate
 from lagrade.derive.reference import Mechanics, total_derivative
 from lagrade.verdicts.result import PartResult
@@ -188,12 +189,16 @@ def _coupled(mech: Mechanics, right: list[str], wrong: list[str]) -> str:
     return ", ".join(pairs)
 
 
+#: per-entry credit compares with 1e-6 of the motion: integrated well below that
+_ENTRY_ACCURACY = Accuracy("entries", rtol=1e-11, atol=1e-12, method="DOP853")
+
+
 def _entries_against_motion(ctx: Context, part: Part, mech: Mechanics, sol: dict[str, sp.Expr]
                             ) -> tuple[list[str], list[str]] | None:
     """Each coordinate's q(t) compared with the reference motion integrated from the stated initial
     values (a few parameter draws, a few times): which entries are right on their own. None when
     the initial values do not give the whole state or the motion cannot be integrated."""
-    from scipy.integrate import solve_ivp
+    from lagrade.compare.scene_model import scene_motion
 
     keys = [*mech.names, *(f"{n}_d" for n in mech.names)]
     if any(k not in part.initial for k in keys):
@@ -201,28 +206,25 @@ def _entries_against_motion(ctx: Context, part: Part, mech: Mechanics, sol: dict
     K = 3
     pts = sample_points(mech, K, rng_for(ctx.problem.id, part.name, "entries"), extra=part.symbol_domains)
     pargs = [*mech.params, *(sp.Symbol(x) for x in part.symbols)]
-    y0 = evaluate([mech.parse(part.initial[k], part.symbols) for k in keys], pargs, pts.args(pargs))
-    params = np.array(pts.args(mech.params)).reshape(len(mech.params), K)
-    n = len(mech.names)
+    y0 = np.array([np.broadcast_to(np.asarray(row, dtype=float), (K,)) for row in
+                   evaluate([mech.parse(part.initial[k], part.symbols) for k in keys], pargs, pts.args(pargs))])
+    params = np.array(pts.args(mech.params), dtype=float).reshape(len(mech.params), K)
     times = np.linspace(0.0, mech.system.horizon, 9)[1:]
+    # the scene's model with its declared events, as every other path integrates it: a motion that
+    # loses its contact is compared only up to there (the scene says nothing beyond)
+    run = scene_motion(mech, y0, params, float(times[-1]), _ENTRY_ACCURACY, t_eval=np.concatenate([[0.0], times]))
+    if not run.ok or run.y.shape[-1] != times.size + 1:
+        return None
     ok = {name: True for name in mech.names}
     for k in range(K):
-        def rates(t, y, k=k):
-            acc = mech.accelerations(y[:n, None], y[n:, None], np.array([t]), params[:, k:k + 1])
-            return np.concatenate([y[n:], acc[:, 0]])
-        try:
-            with np.errstate(all="ignore"):
-                run = solve_ivp(rates, (0.0, times[-1]), np.asarray(y0[:, k], dtype=float), method="DOP853",
-                                t_eval=times, rtol=1e-11, atol=1e-12)
-        except Exception:  # noqa: BLE001
-            return None
-        if not run.success:
-            return None
-        argv = [np.asarray(times), *(np.full(times.size, a[k]) for a in pts.args(pargs))]
+        live = times <= run.t_stop[k] + 1e-12
+        if not live.any():
+            continue
+        argv = [np.asarray(times[live]), *(np.full(int(live.sum()), a[k]) for a in pts.args(pargs))]
         with np.errstate(all="ignore"):
             mine = evaluate([sol[name] for name in mech.names], [T, *pargs], argv)
         for i, name in enumerate(mech.names):
-            true = run.y[i]
+            true = run.y[i, k, 1:][live]
             if not np.allclose(mine[i], true, rtol=1e-6, atol=1e-6 * max(np.abs(true).max(), 1.0)):
                 ok[name] = False
     right = [name for name in mech.names if ok[name]]

@@ -24,7 +24,6 @@ from lagrade.verdicts.checkers.base import (
     keyed,
     read_sympy,
 )
-from lagrade.compare.trajectory import integrate
 from lagrade.numbers.numeric import evaluate
 from lagrade.derive.reference import Mechanics
 from lagrade.verdicts.result import PartResult
@@ -151,21 +150,21 @@ def _numbers(part: Part, mech: Mechanics) -> tuple[np.ndarray, np.ndarray, tuple
 
 def _reference_at(ctx: Context, mech: Mechanics, params: np.ndarray, y0: np.ndarray, t0: float,
                   times: np.ndarray) -> np.ndarray:
-    """q of the reference motion at ``times`` (sorted, >= t0), integrated from y0 at t0: (n, N)."""
+    """q of the reference motion at ``times`` (sorted, >= t0), integrated from y0 at t0: (n, N). The
+    scene's model with its declared events (`scene_motion`, as every path integrates it); a time past
+    a lost contact has no reference (the scene's model ends there): NaN, said by the caller."""
+    from lagrade.compare.scene_model import scene_motion
+
     n = len(mech.names)
-    P = params.reshape(-1, 1)
-
-    def rates(t, y):
-        tt = np.full(y.shape[1], t) if np.ndim(t) == 0 else t
-        return np.concatenate([y[n:], mech.accelerations(y[:n], y[n:], tt + t0, P)])
-
     span = float(times[-1] - t0)
     grid = np.unique(np.concatenate([[0.0], times - t0]))
-    run = integrate(rates, y0.reshape(-1, 1), max(span, 1e-12), ctx.accuracy, t_eval=grid)
+    run = scene_motion(mech, y0.reshape(-1, 1), params.reshape(-1, 1), max(span, 1e-12), ctx.accuracy,
+                       t_eval=grid, t0=t0)
     if not run.ok or run.t.size != grid.size:
         raise RuntimeError(f"the reference motion could not be integrated: {run.message}")
     at = np.searchsorted(grid, times - t0)
-    return run.y[:n, 0, at]
+    out = run.y[:n, 0, at]
+    return np.where(grid[at] <= run.t_stop[0] + 1e-12, out, np.nan)
 
 
 def check_numerical_solution(ctx: Context, part: Part, value: object) -> PartResult:
@@ -200,9 +199,12 @@ def check_numerical_solution(ctx: Context, part: Part, value: object) -> PartRes
                                 f"t = {t0 + (t1 - t0) / 2:g} (the window is {t0:g} to {t1:g})")
         what = "your table"
     ref = _reference_at(ctx, mech, params, y0, t0, times)
-    scale = np.maximum(np.abs(ref).max(axis=1), np.ptp(ref, axis=1))
+    modelled = np.isfinite(ref).all(axis=0)   # not past a lost contact: the scene's model ends there
+    if not modelled.any():
+        raise RuntimeError("the scene's model ends (its contact is lost) before the first time compared")
+    scale = np.maximum(np.abs(ref[:, modelled]).max(axis=1), np.ptp(ref[:, modelled], axis=1))
     scale = np.where(scale > 0, scale, 1.0)[:, None]
-    off = ~(np.abs(vals - ref) <= RTOL * scale)  # NaN counts as off
+    off = ~(np.abs(vals - ref) <= RTOL * scale) & modelled  # NaN of the answer counts as off
     if not off.any():
         return graded(part, 1.0, "numeric", f"correct: {what} follows the motion at all {times.size} times "
                                             f"(within {RTOL:.1%} of its scale).")
