@@ -13,7 +13,8 @@ A generated block in docs/*.md is
 
 optionally with ``; timing columns: ms, time / grading path`` after the command: the columns that are
 measured times (they differ on every run and every machine). The block holds the command's standard
-output from its first line that starts with ``|`` or ``**`` (progress lines before it are dropped).
+output from its first line that starts with ``|`` or ``**`` (progress lines before it are dropped, and
+``wrote FILE`` notices), indented as its begin marker is (a block inside a list item).
 The command runs from the repository root with ``python`` and ``lagrade`` taken from this interpreter's
 environment.
 
@@ -47,6 +48,11 @@ class Block:
     start: int   # index of the line after the begin marker
     stop: int    # index of the end marker
     text: str    # the committed content
+    indent: str  # the begin marker's indentation (a block inside a list item), given to every line
+
+
+def _name(path: Path) -> str:
+    return str(path.relative_to(ROOT)) if path.is_relative_to(ROOT) else str(path)
 
 
 def blocks(paths: list[Path] | None = None) -> list[Block]:
@@ -60,9 +66,10 @@ def blocks(paths: list[Path] | None = None) -> list[Block]:
             if m:
                 j = next((k for k in range(i + 1, len(lines)) if lines[k].strip() == END), None)
                 if j is None:
-                    raise SystemExit(f"{path.relative_to(ROOT)}:{i + 1}: a generated block without `{END}`")
+                    raise SystemExit(f"{_name(path)}:{i + 1}: a generated block without `{END}`")
                 timing = tuple(c.strip() for c in (m["timing"] or "").split(",") if c.strip())
-                out.append(Block(path, m["cmd"], timing, i + 1, j, "\n".join(lines[i + 1:j])))
+                indent = lines[i][: len(lines[i]) - len(lines[i].lstrip())]
+                out.append(Block(path, m["cmd"], timing, i + 1, j, "\n".join(lines[i + 1:j]), indent))
                 i = j
             i += 1
     return out
@@ -76,7 +83,7 @@ def run(command: str) -> str:
     done = subprocess.run(cmd, shell=True, cwd=ROOT, env=env, capture_output=True, text=True)
     if done.returncode != 0:
         raise RuntimeError(f"`{command}` failed ({done.returncode}): {done.stderr.strip()[-2000:]}")
-    lines = done.stdout.rstrip("\n").splitlines()
+    lines = [line for line in done.stdout.rstrip("\n").splitlines() if not line.startswith("wrote ")]
     first = next((i for i, line in enumerate(lines) if line.lstrip().startswith(("|", "**"))), None)
     if first is None:
         raise RuntimeError(f"`{command}` printed no Markdown table")
@@ -123,8 +130,10 @@ def differences(committed: str, fresh: str, timing: tuple[str, ...]) -> list[str
 
 
 def rewrite(block: Block, fresh: str) -> None:
+    """Replace the block's content, found again by its command (the file may have changed meanwhile)."""
+    block = next(b for b in blocks([block.path]) if b.command == block.command)
     lines = block.path.read_text().splitlines()
-    lines[block.start:block.stop] = fresh.splitlines()
+    lines[block.start:block.stop] = [block.indent + line if line else "" for line in fresh.splitlines()]
     block.path.write_text("\n".join(lines) + "\n")
 
 
@@ -139,7 +148,7 @@ def main(argv: list[str] | None = None) -> int:
     todo = [(b.path, b.command) for b in blocks() if args.only in b.command]
     for path, command in todo:
         block = next(b for b in blocks([path]) if b.command == command)
-        where = f"{path.relative_to(ROOT)}:{block.start}"
+        where = f"{_name(path)}:{block.start}"
         if args.list:
             print(f"{where}: {command}" + (f" (timing columns: {', '.join(block.timing)})" if block.timing else ""))
             continue

@@ -220,3 +220,22 @@ def test_the_numerical_reference_is_the_scene_model_with_its_events():
     assert np.isfinite(ref[:, 0]).all() and np.isnan(ref[:, -1]).all()
     modelled = times[np.isfinite(ref[0])]
     assert modelled[-1] < LATE
+
+
+def test_the_benchmarks_time_the_grading_paths_entry(monkeypatch):
+    """`lagrade bench accuracy`'s grading row runs `scene_motion` (the declared model, its events), the
+    entry the motion and numerical parts use; a row that integrated bare rates would bypass it."""
+    from lagrade.uses.research import workprecision as wp
+
+    calls = []
+    real = wp.scene_motion
+
+    def spy(mech, y0, params, horizon, acc, **kw):
+        calls.append(kw)
+        return real(mech, y0, params, horizon, acc, **kw)
+
+    monkeypatch.setattr(wp, "scene_motion", spy)
+    sc = wp.scene("12.43", K=2)
+    t_eval = np.linspace(0.0, sc.horizon, 11)
+    row = wp._grading_row(sc, ACCURACY["default"], "DOP853", t_eval, np.zeros((sc.y0.shape[0], 2, 11)), 1)
+    assert calls and row.ok and row.method == "grading"

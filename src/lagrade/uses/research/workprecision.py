@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import csv
 import math
+import os
 import statistics
 import time
 from collections.abc import Callable, Sequence
@@ -444,7 +445,8 @@ def ranges(sw: Sweep) -> str:
             parts.append(f"{LABELS[method].split(' (')[0]} {min(ratios):.2f}-{max(ratios):.2f}x")
     tols = sorted({r.tol for r in sw.rows}, reverse=True)
     fastest = [t for t in tols if min(sw.rows, key=lambda r: (r.tol != t, r.seconds)).method == "grading"]
-    return (f"Measured in this run (times vary with the machine and its load; errors and evaluations do not): "
+    load = f" at load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores" if hasattr(os, "getloadavg") else ""
+    return (f"Measured in this run{load} (times vary with the machine and its load; errors and evaluations do not): "
             f"time / grading path over the tolerances {', '.join(parts)}; the grading path was the fastest "
             f"series at {len(fastest)} of {len(tols)} tolerances"
             + (f" ({', '.join(f'{t:.0e}' for t in fastest)})." if fastest else "."))
