@@ -239,3 +239,19 @@ def test_the_benchmarks_time_the_grading_paths_entry(monkeypatch):
     t_eval = np.linspace(0.0, sc.horizon, 11)
     row = wp._grading_row(sc, ACCURACY["default"], "DOP853", t_eval, np.zeros((sc.y0.shape[0], 2, 11)), 1)
     assert calls and row.ok and row.method == "grading"
+
+
+def test_the_scene_grades_end_to_end():
+    """The test scene's right answers get full marks through `lagrade.check`, and a motion with one
+    wrong entry the per-entry credit (the scene model's motion, its events watched)."""
+    t = sp.Symbol("t")
+    r, x = sp.Function("r")(t), sp.Function("x")(t)
+    pr, px = sp.Function("p_r")(t), sp.Function("p_x")(t)
+    m, g, om, x0, u = sp.symbols("m g omega x0 u", positive=True)
+    H = (pr**2 + px**2) / (2 * m) - m * om**2 * r**2 / 2 + m * g * r * sp.sin(om * t)
+    eom = [sp.Eq(m * r.diff(t, 2), m * om**2 * r - m * g * sp.sin(om * t)), sp.Eq(m * x.diff(t, 2), 0)]
+    got = {p.part: p for p in lagrade.check(PROBLEM, H=H, eom=eom, solution={"r": _r_exact(), "x": x0 + u * t}).parts}
+    assert all(got[k].verdict == "correct" for k in ("H", "eom", "solution")), {k: p.feedback for k, p in got.items()}
+    part = next(p for p in lagrade.check(PROBLEM, solution={"r": _r_exact(), "x": x0 + 2 * u * t}).parts
+                if p.part == "solution")
+    assert part.verdict == "partial" and "r(t) is right" in part.feedback, part.feedback
