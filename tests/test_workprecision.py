@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from markdown_it import MarkdownIt
 
+from lagrade.compare import trajectory
 from lagrade.compare.trajectory import ACCURACY, compare_runs
 from lagrade.numbers.numeric import CompiledRates, is_machine_code
 from lagrade.uses.research import workprecision as wp
@@ -19,7 +20,8 @@ REPEAT = 3
 
 @pytest.fixture(scope="module")
 def spied():
-    """One sweep, with every call of `integrate` and `solve_ivp` it makes recorded."""
+    """One sweep, with every call of `integrate` and `solve_ivp` it makes recorded (the grading rows'
+    through `scene_motion`, the entry every integrated path of grading shares)."""
     calls = {"integrate": [], "solve_ivp": []}
     real_integrate, real_solve = wp.integrate, wp.solve_ivp
 
@@ -34,6 +36,8 @@ def spied():
 
     mp = pytest.MonkeyPatch()
     mp.setattr(wp, "integrate", integrate)
+    # the grading row runs the grading path's entry (`scene_motion`), which calls `integrate` from there
+    mp.setattr(trajectory, "integrate", integrate)
     mp.setattr(wp, "solve_ivp", solve_ivp)
     try:
         sc = wp.scene("12.43", K=K)
