@@ -31,6 +31,7 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -156,6 +157,11 @@ def main(argv: list[str] | None = None) -> int:
         if args.check:
             diff = differences(block.text, fresh, block.timing)
             failed += bool(diff)
+            if diff:   # a long run's output is kept: `regen_docs.py` need not run it again to see it
+                kept = Path(tempfile.gettempdir()) / "regen_docs" / (re.sub(r"\W+", "-", command)[:80] + ".md")
+                kept.parent.mkdir(parents=True, exist_ok=True)
+                kept.write_text(fresh + "\n")
+                diff.append(f"the fresh output: {kept}")
             print(f"{where}: `{command}`: " + ("differs:\n  " + "\n  ".join(diff) if diff else "the same"))
         else:
             rewrite(block, fresh)
