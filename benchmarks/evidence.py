@@ -16,8 +16,8 @@ are written as an answer three ways and graded under fast, default and strict:
 - **small parameter error**: one parameter p -> (1 + 1/10**6) p (the finest exact fraction the numbers
   rule lets through), the first parameter (in the problem's order) whose 10 % change is rejected;
 - **gross error**: the same parameter off by 10 %;
-- **kick outside the exact class**: the first row's force terms times ``1 + 2**(-10**4*(t - h/2)**2)``,
-  h the horizon: a kick 0.02 s wide in the middle of every motion, which a state sampled at random
+- **kick outside the exact class**: the first row's force terms times ``1 + 2**(-10**6*(t - h/2)**2)``,
+  h the horizon: a kick 2e-3 s wide in the middle of every motion, which a state sampled at random
   times rarely meets, analytic with exact numbers, and outside the exact judge's class (a power with
   a non-rational exponent): the motion decides it (issue 45).
 
@@ -63,11 +63,11 @@ def beyond_box(rows: list[sp.Expr], mech) -> list[sp.Expr] | None:
 
 
 def kick(rows: list[sp.Expr], mech) -> list[sp.Expr] | None:
-    """The first row with force terms plus that force times ``2**(-10**4*(t - h/2)**2)``; None when no
+    """The first row with force terms plus that force times ``2**(-10**6*(t - h/2)**2)``; None when no
     row has one."""
     from lagrade.problem.symbols import T
 
-    bump = sp.Integer(2) ** (-10**4 * (T - sp.nsimplify(mech.system.horizon) / 2) ** 2)
+    bump = sp.Integer(2) ** (-10**6 * (T - sp.nsimplify(mech.system.horizon) / 2) ** 2)
     for i, row in enumerate(rows):
         force = sp.simplify(row.xreplace({a: 0 for a in mech.s.qdd}))
         if force != 0:
