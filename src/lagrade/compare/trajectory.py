@@ -676,7 +676,7 @@ def _reference_run(reference: Rates, y0: np.ndarray, horizon: float, acc: Accura
 #: this apart in every component (relative to the component's size, at least 1) and in t
 SCAN_STEP = 2e-4
 #: at most this many states per scan (the spacing grows to fit): two batched evaluations of the rates
-SCAN_STATES = 120_000
+SCAN_STATES = 40_000
 #: at most this many windows per trajectory where the student's steps are bounded
 SCAN_WINDOWS = 8
 #: steps across a window where the rates differ: at most its width over this
