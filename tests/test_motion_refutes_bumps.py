@@ -155,3 +155,22 @@ def test_the_gradebook_keeps_the_motion_evidence(tmp_path, motion_alone):
     assert got[0] == "trajectory"
     ev = json.loads(got[1])
     assert ev["confirmed"] is True and ev["separation"] > 1 and ev["t"] > 0
+
+
+def test_dop853_steps_through_a_capped_window():
+    """The integrator's side of it: y' = exp(-10**8*(t - 1/2)**2) from 0 to 1. Unbounded, the steps
+    straddle the spike and y(1) is about 0; with steps of at most 1e-5 in [0.49, 0.51] the error
+    control meets it and y(1) is its integral, sqrt(pi)*1e-4."""
+    import numpy as np
+
+    from lagrade.compare import dop853
+
+    def f(t, Y):
+        return np.exp(-1e8 * (np.asarray(t) - 0.5) ** 2) * np.ones_like(Y)
+
+    y0, times = np.zeros((1, 2)), np.array([1.0])
+    free = dop853.solve(f, 0.0, y0, 1.0, rtol=1e-10, atol=1e-10, t_eval=times)
+    capped = dop853.solve(f, 0.0, y0, 1.0, rtol=1e-10, atol=1e-10, t_eval=times, caps=[(1, 0.49, 0.51, 1e-5)])
+    assert abs(free.y[0, 0, -1]) < 1e-6                      # the spike was stepped over
+    assert abs(capped.y[0, 0, -1]) < 1e-6                    # column 0 has no cap
+    assert abs(capped.y[0, 1, -1] - np.sqrt(np.pi) * 1e-4) < 1e-9
