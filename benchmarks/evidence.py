@@ -15,7 +15,11 @@ are written as an answer three ways and graded under fast, default and strict:
   beyond it;
 - **small parameter error**: one parameter p -> (1 + 1/10**6) p (the finest exact fraction the numbers
   rule lets through), the first parameter (in the problem's order) whose 10 % change is rejected;
-- **gross error**: the same parameter off by 10 %.
+- **gross error**: the same parameter off by 10 %;
+- **kick outside the exact class**: the first row's force terms times ``1 + 2**(-10**6*(t - h/2)**2)``,
+  h the horizon: a kick 2e-3 s wide in the middle of every motion, which a state sampled at random
+  times rarely meets, analytic with exact numbers, and outside the exact judge's class (a power with
+  a non-rational exponent): the motion decides it (issue 45).
 
 Each graded part's deciding evidence is read from the verdict (`lagrade.uses.research.sensitivity.evidence`):
 exact arithmetic (`lagrade.compare.exact`, for answers in its class), the sampled states (the box), the states along the motion, the trajectory comparison, the numbers rule,
@@ -39,7 +43,7 @@ from lagrade.problem.library import load_problem, problem_ids
 from lagrade.uses.research.sensitivity import _write, evidence, reference_rows
 
 PRESETS = ("fast", "default", "strict")
-CLASSES = ("beyond the box", "small parameter error", "gross error")
+CLASSES = ("beyond the box", "small parameter error", "gross error", "kick outside the exact class")
 EVIDENCE = ("exact arithmetic", "sampled states", "states along the motion", "trajectories", "the numbers rule", "not rejected")
 
 
@@ -51,6 +55,19 @@ def beyond_box(rows: list[sp.Expr], mech) -> list[sp.Expr] | None:
     s = sum((qd / sp.nsimplify(max(abs(v) for v in coords[name].velocity))) ** 2
             for name, qd in zip(mech.names, mech.s.qd))
     bump = sp.exp(8 * (s - len(mech.names)) - 30)
+    for i, row in enumerate(rows):
+        force = sp.simplify(row.xreplace({a: 0 for a in mech.s.qdd}))
+        if force != 0:
+            return [*rows[:i], row + force * bump, *rows[i + 1:]]
+    return None
+
+
+def kick(rows: list[sp.Expr], mech) -> list[sp.Expr] | None:
+    """The first row with force terms plus that force times ``2**(-10**6*(t - h/2)**2)``; None when no
+    row has one."""
+    from lagrade.problem.symbols import T
+
+    bump = sp.Integer(2) ** (-10**6 * (T - sp.nsimplify(mech.system.horizon) / 2) ** 2)
     for i, row in enumerate(rows):
         force = sp.simplify(row.xreplace({a: 0 for a in mech.s.qdd}))
         if force != 0:
@@ -92,6 +109,9 @@ def scan(ids: list[str]):
                     answers["small parameter error"] = [r.xreplace({param: (1 + sp.Rational(1, 10**6)) * param})
                                                         for r in ref]
                     answers["gross error"] = [r.xreplace({param: sp.Rational(11, 10) * param}) for r in ref]
+                kicked = kick(ref, mech)
+                if kicked is not None:
+                    answers["kick outside the exact class"] = kicked
                 line = []
                 for cls, rows in answers.items():
                     for acc in PRESETS:

@@ -108,7 +108,7 @@ def test_check_reference_exit_0_and_json_shape():
     assert data["problem"] == "12.43" and data["score"] == data["max_score"] == 3.0
     for part in data["parts"]:
         assert set(part) == {"part", "verdict", "score", "max_score", "method", "feedback", "read_as", "review",
-                             "extra", "certified", "confirmed", "trajectory_evidence"}
+                             "extra", "certified", "confirmed", "trajectory_evidence", "motion_evidence"}
         assert part["read_as"]  # the LaTeX of the answer as read
         assert part["method"] in {"symbolic", "numeric", "trajectory", "exact"}
 

@@ -57,9 +57,15 @@ def test_the_exact_judge_refuses_it_first(beyond_the_box):
 
 
 @pytest.mark.negligible_rule
-def test_the_screen_refuses_it_first(beyond_the_box):
+def test_the_screen_refuses_it_first(beyond_the_box, monkeypatch):
     """With the exact judge off (an answer outside its class) and the negligible-part rule on, the hidden
-    term is named and the answer gets no credit without a proof, before any motion is integrated."""
+    term is flagged, and its motion is still followed (a flagged smooth answer: issue 45): the states
+    it visits refute the equations, certified, before the rule's uncertified refusal is needed. Without
+    that motion the rule names the hidden term and gives no credit without a proof."""
+    part = _part(lagrade.check("12.14", beyond_the_box, accuracy="default"))
+    assert part.verdict == "incorrect" and part.score == 0, part.feedback
+    assert dynamics.ALONG_MOTION.replace("the true motion", "it") in part.feedback and part.certified is True
+    monkeypatch.setattr(admit, "smooth_pending", lambda: False)
     part = _part(lagrade.check("12.14", beyond_the_box, accuracy="default"))
     assert part.verdict == "incorrect" and part.score == 0, part.feedback
     assert "changes the whole by less than" in part.feedback and "exp(" in part.feedback
@@ -80,13 +86,17 @@ def test_an_answer_wrong_only_beyond_the_box_is_rejected_along_the_motion(beyond
     assert part.certified is True, part.review   # certified at the exact motion state, like a box sample
 
 
-def test_a_lagrangian_wrong_only_beyond_the_box_is_rejected_along_the_motion(tmp_path):
-    """L plus a velocity term below 1e-13 of it in the box: its Lagrange equations are compared at the
-    states the motion visits (main rejected it only by the trajectory comparison, uncertified)."""
+def test_a_lagrangian_wrong_only_beyond_the_box_is_rejected_along_the_motion(tmp_path, monkeypatch):
+    """L plus a velocity term below 1e-13 of it in the box: refuted by the motion, confirmed at the finer
+    tolerance (issue 45: the motion decides first); without the motion's refutation its Lagrange
+    equations are compared at the states the motion visits, certified."""
     path = tmp_path / "answer.toml"
     path.write_text('L = "(m1 + m2)*l1^2*theta1_d^2/2 + m2*l2^2*theta2_d^2/2 + m2*l1*l2*theta1_d*theta2_d*'
                     'cos(theta1 - theta2) + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2) + '
                     'g*l1*m1*exp(8*theta1_d^2 + 8*theta2_d^2 - 40)"\n')
+    part = _part(lagrade.check("12.14", path, accuracy="default"), "L")
+    assert part.verdict == "incorrect" and part.method == "trajectory" and part.confirmed is True, part.feedback
+    monkeypatch.setattr(dynamics, "_motion_refutes", lambda *a, **k: None)
     part = _part(lagrade.check("12.14", path, accuracy="default"), "L")
     assert part.verdict == "incorrect" and part.method == "numeric", part.feedback
     assert "the Lagrange equations your L gives" in part.feedback and dynamics.ALONG_MOTION in part.feedback

@@ -169,8 +169,10 @@ class DOP853:
     """
 
     def __init__(self, fun, t0: float, y0: np.ndarray, t_end: float, rtol: float, atol: float,
-                 limit: float = math.inf, watch: Callable[[np.ndarray, np.ndarray], None] | None = None):
+                 limit: float = math.inf, watch: Callable[[np.ndarray, np.ndarray], None] | None = None,
+                 caps: Sequence[tuple[int, float, float, float]] = ()):
         self.fun, self.t_end, self.rtol, self.limit = fun, t_end, rtol, limit
+        self.caps = list(caps)
         self.watch = watch or (lambda t, f: None)
         dim, K = self.dim, self.K = y0.shape
         # The stages are stored scaled by their column's step, Z = [y, h K_0, ..., h K_15], so stage s
@@ -225,6 +227,9 @@ class DOP853:
             raise StepTooSmall(int(np.argmax(small)))
         if self.nfev + N_STAGES > self.limit:
             raise OverBudget
+        for k, a, b, h_max in self.caps:   # a step that reaches into a capped window enters it by h_max at most
+            if t[k] < b and t[k] + self.h_abs[k] > a:
+                self.h_abs[k] = min(self.h_abs[k], max(a - t[k], 0.0) + h_max)
         self.t_new = np.where(active, np.minimum(t + self.h_abs, self.t_end), t)
         np.subtract(self.t_new, t, out=h)  # 0 for the columns that do not move
         np.multiply(self.F0, h, out=Z[1])
@@ -458,7 +463,8 @@ class _Events:
 def solve(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: float, y0: np.ndarray, t_end: float, *,
           rtol: float, atol: float, t_eval: np.ndarray, max_evals: int | None = None,
           events: Sequence[ColumnEvent] = (), max_events_per_column: int = 200,
-          watch: Callable[[np.ndarray, np.ndarray], None] | None = None) -> ColumnResult:
+          watch: Callable[[np.ndarray, np.ndarray], None] | None = None,
+          caps: Sequence[tuple[int, float, float, float]] = ()) -> ColumnResult:
     """Integrate the K columns of ``y0`` (dim, K) from t0 to t_end, each with its own time and step.
 
     Samples at ``t_eval`` come from each column's dense output (the 3 extra stages are evaluated only
@@ -469,6 +475,9 @@ def solve(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: float, y0: np
     The run fails (status -1, the column and time in the message) when a column's step falls below
     10 ulp of its time (also after NaN/inf, which shrink the step), when ``max_evals`` would be
     exceeded, or when a column has more than ``max_events_per_column`` events. ``watch``: see `DOP853`.
+    ``caps``: (column, a, b, h_max): inside [a, b] that column's steps are at most h_max, so a feature
+    of the rates narrower than the steps the error control would take (a bump the stages would
+    straddle unseen) is stepped through, and then resolved by the error control.
     """
     t0, y0, t_end, t_eval, rtol, atol = _validate(t0, y0, t_end, t_eval, rtol, atol)
     dim, K = y0.shape
@@ -493,7 +502,7 @@ def solve(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], t0: float, y0: np
         return result(0, "the interval is empty")
     with np.errstate(all="ignore"):
         g_old = [ev.g(i, np.full(K, t0), y0) for i in range(len(events))]
-        sol = DOP853(fun, t0, y0, t_end, rtol, atol, math.inf if max_evals is None else max_evals, watch)
+        sol = DOP853(fun, t0, y0, t_end, rtol, atol, math.inf if max_evals is None else max_evals, watch, caps)
         try:
             while sol.active.any():
                 try:

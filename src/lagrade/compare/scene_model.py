@@ -401,6 +401,8 @@ class SceneModel(Switching):
             qd = velocities(*Y[:n], *Y[n:], *timed, *params)
             return np.concatenate([qd, forces(*Y[:n], *qd, *timed, *params)])
 
+        if np.ndim(params) == 2:   # the same rates on m copies of the batch (`trajectory.rate_scan`)
+            f.tiled = lambda m: self.hamilton_rates(np.tile(params, (1, m)))
         return f
 
     def multipliers(self, Y: np.ndarray, t, params: np.ndarray) -> np.ndarray:

@@ -252,12 +252,14 @@ def _affordable_window(st: Stiffness, horizon: float, acc: Accuracy) -> float:
 
 def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, samples: int = 201, *,
               method: str | None = None, events: Sequence[BatchedEvent] = (), jac: bool | None = None,
-              t_eval: np.ndarray | None = None, guard: bool = True) -> Run:
+              t_eval: np.ndarray | None = None, guard: bool = True,
+              caps: Sequence[tuple[int, float, float, float]] = ()) -> Run:
     """Integrate K states at once; a blow-up, a singularity or a runaway cost ends the run, not the grader.
 
     ``method``: None uses ``acc.method`` ("auto": DOP853, or LSODA with a batched Jacobian and, if
     needed, a window the budget can afford, when the scene is stiff). ``events``: batched events
     (contact loss stops a trajectory; a switching event moves it to a new branch, from where it goes on).
+    ``caps``: windows of time where a trajectory's steps are bounded (DOP853 only: `dop853.solve`).
     """
     dim, K = y0.shape
     y0 = np.asarray(y0, dtype=float)
@@ -385,7 +387,7 @@ def integrate(rates: Rates, y0: np.ndarray, horizon: float, acc: Accuracy, sampl
         # since a switch may change them (breakaway is watched only once something sticks)
         evs = [ColumnEvent(ev.fn, ev.direction, _Watch(ev, alive), handler(ev)) for ev in events]
         res = dop853.solve(fun, t0, y.reshape(dim, K), horizon, rtol=acc.rtol, atol=acc.atol, t_eval=times,
-                           events=evs, watch=watch)
+                           events=evs, watch=watch, caps=caps)
         if res.status == -1:
             raise _Failed(res.message, res.t_failed if res.t_failed is not None else t0)
         return res.t, res.y.reshape(dim * K, -1), None
@@ -572,6 +574,12 @@ class Comparison:
     confirmed: bool | None = None
     #: ``confirm()`` (set by the checker that made the comparison): `confirm_refutation` with its inputs
     confirm: Callable[[], None] | None = field(default=None, repr=False)
+    #: windows where the student's steps were bounded (`rate_scan`), and the states the scan evaluated
+    caps: list = field(default_factory=list, repr=False)
+    scanned: int = 0
+    #: a confirmed or unconfirmed refutation's evidence as numbers (`confirm_refutation`): for `--json`
+    #: and the gradebook, instructors only
+    measured: dict | None = None
 
     def describe(self) -> str:
         at = ""
@@ -615,7 +623,7 @@ def compare_runs(student: Rates, reference: Rates, y0: np.ndarray, labels: list[
         if key is not None:
             store[key] = (ref, method, window, why, amp)
     return _compare_to_reference(student, ref, y0, labels, horizon, acc, method, window, why, amp,
-                                 events if student_events is None else student_events)
+                                 events if student_events is None else student_events, reference)
 
 
 def _paired(reference: Rates, K: int) -> Rates:
@@ -664,8 +672,91 @@ def _reference_run(reference: Rates, y0: np.ndarray, horizon: float, acc: Accura
     return ref, method, window, why, amp
 
 
+#: the rate scan's spacing: consecutive states it evaluates along each reference motion are at most
+#: this apart in every component (relative to the component's size, at least 1) and in t
+SCAN_STEP = 2e-4
+#: at most this many states per scan (the spacing grows to fit): two batched evaluations of the rates
+SCAN_STATES = 40_000
+#: at most this many windows per trajectory where the student's steps are bounded
+SCAN_WINDOWS = 8
+#: steps across a window where the rates differ: at most its width over this
+SCAN_STEPS_ACROSS = 8.0
+
+
+def _tiled(rates: Rates, m: int) -> Rates | None:
+    """The same rates on ``m`` copies of the batch's K columns (column j*K + k is trajectory k), or
+    None for rates that cannot be (a switching model keeps a branch per trajectory)."""
+    if isinstance(rates, CompiledRates):
+        c = rates.constants
+        return CompiledRates(rates.f, rates.dim, np.tile(c, (1, m)) if c.shape[1] > 1 else c, rates.copied,
+                             rates.timed)
+    tile = getattr(rates, "tiled", None)
+    return tile(m) if tile is not None else None
+
+
+def rate_scan(student: Rates, reference: Rates, ref: Run, rtol: float) -> tuple[list[tuple[int, float, float, float]], int]:
+    """Where, along each reference motion, the student's rates leave the true ones: the windows
+    (trajectory, a, b, h_max) in which the student's run must step finely, and the states evaluated.
+
+    Why: an integrator sees the rates only at its stages. A bump in a student's equations narrower
+    than the steps the true motion allows (``exp(-10**6*(theta - 1/3)**2)``: 2e-3 wide in theta,
+    crossed in a millisecond, between stages 0.05 s apart) is stepped over unseen, its error estimate
+    blind to it, and the two motions "agree". The reference's stored states, joined by cubic Hermite
+    interpolation (their rates are the reference's), are evaluated at most `SCAN_STEP` apart in every
+    component and in t, both rates in two batched calls; wherever they differ beyond ``rtol`` (relative,
+    the sampled states' tolerance: a correct answer written differently differs by rounding) the
+    student's run gets a window of bounded steps, so its error control meets the feature and resolves
+    it. Any state is a fair test of rates, so the interpolation's error does not matter; the verdict is
+    still the separation of the two integrated motions (`confirm_refutation` re-checks it)."""
+    t, y = ref.t, ref.y
+    if t.size < 2 or y.ndim != 3:
+        return [], 0
+    dim, K, T = y.shape
+    R, S = _tiled(reference, T), _tiled(student, T)
+    if R is None or S is None or not np.isfinite(y).all():
+        return [], 0
+    with np.errstate(all="ignore"):
+        F = np.asarray(R(np.repeat(t, K), y.transpose(0, 2, 1).reshape(dim, T * K)), dtype=float).reshape(dim, T, K)
+    if not np.isfinite(F).all():
+        return [], 0
+    Y = y.transpose(0, 2, 1)                                             # (dim, T, K)
+    dt = np.diff(t)
+    dy = np.abs(np.diff(Y, axis=1)) / np.maximum(1.0, np.abs(Y[:, :-1]))  # (dim, T-1, K)
+    m = np.maximum(np.ceil(np.maximum(dy.max(axis=(0, 2)), dt) / SCAN_STEP), 1.0)
+    if m.sum() * K > SCAN_STATES:
+        m = np.maximum(np.floor(m * SCAN_STATES / (m.sum() * K)), 1.0)
+    m = m.astype(int)
+    jj = np.repeat(np.arange(T - 1), m)
+    s = (np.arange(jj.size) - np.repeat(np.cumsum(m) - m, m)) / np.repeat(m, m)    # fractions in [0, 1)
+    M = jj.size
+    h = dt[jj][None, :, None]
+    s3 = s[None, :, None]
+    h00, h10, h01, h11 = 2 * s3**3 - 3 * s3**2 + 1, s3**3 - 2 * s3**2 + s3, -2 * s3**3 + 3 * s3**2, s3**3 - s3**2
+    D = h00 * Y[:, jj] + h10 * h * F[:, jj] + h01 * Y[:, jj + 1] + h11 * h * F[:, jj + 1]   # (dim, M, K)
+    times = t[jj] + s * dt[jj]
+    R, S = _tiled(reference, M), _tiled(student, M)
+    cols, tcol = D.reshape(dim, M * K), np.repeat(times, K)
+    with np.errstate(all="ignore"):
+        fr = np.asarray(R(tcol, cols), dtype=float).reshape(dim, M, K)
+        fs = np.asarray(S(tcol, cols), dtype=float).reshape(dim, M, K)
+        off = (np.abs(fs - fr) > rtol * (1.0 + np.abs(fr))).any(axis=0)       # (M, K); NaN is not flagged
+    caps: list[tuple[int, float, float, float]] = []
+    for k in range(K):
+        idx = np.flatnonzero(off[:, k])
+        if idx.size == 0:
+            continue
+        runs = np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1)[:SCAN_WINDOWS]
+        for run in runs:
+            a = times[max(run[0] - 1, 0)]
+            b = times[run[-1] + 1] if run[-1] + 1 < M else t[-1]
+            width = max(b - a, 1e-12)
+            caps.append((k, float(a - width), float(b + width), float(width / SCAN_STEPS_ACROSS)))
+    return caps, 2 * (T + M) * K
+
+
 def _compare_to_reference(student: Rates, ref: Run, y0: np.ndarray, labels: list[str], horizon: float,
-                          acc: Accuracy, method: str, window: float, why: str, amp, events) -> Comparison:
+                          acc: Accuracy, method: str, window: float, why: str, amp, events,
+                          reference: Rates | None = None) -> Comparison:
     common = dict(seconds=ref.seconds, rhs_evals=ref.rhs_evals, method=method, rtol=acc.rtol, window=window,
                   why_window=why, ftle=float(np.nanmax(amp.ftle)) if amp is not None else None)
     if not ref.ok:
@@ -675,7 +766,11 @@ def _compare_to_reference(student: Rates, ref: Run, y0: np.ndarray, labels: list
     ref = Run(ref.t[keep], ref.y[..., keep], ref.ok, ref.message, ref.rhs_evals, ref.seconds, ref.method,
               ref.t_stop, ref.events, ref.stiffness, window)
     common.update(reference_t=ref.t, reference_y=ref.y, reference_stop=ref.t_stop)
-    stu = integrate(student, y0, window, acc, method=method, events=events, t_eval=ref.t)
+    caps: list = []
+    if method == "DOP853" and reference is not None:
+        caps, scanned = rate_scan(student, reference, ref, acc.sample_rtol)
+        common.update(caps=caps, scanned=scanned)
+    stu = integrate(student, y0, window, acc, method=method, events=events, t_eval=ref.t, caps=caps)
     common["seconds"] += stu.seconds
     common["rhs_evals"] += stu.rhs_evals
     n = min(stu.y.shape[-1], ref.y.shape[-1])
@@ -743,9 +838,9 @@ def confirm_refutation(comparison: Comparison, student: Rates, reference: Rates,
     window = float(times[-1])
     method = c.method or "DOP853"
     try:
-        ref_f = integrate(reference, y0, window, fine, method=method, events=events, t_eval=times)
+        ref_f = integrate(reference, y0, window, fine, method=method, events=events, t_eval=times, caps=c.caps)
         stu_f = integrate(student, y0, window, fine, method=method,
-                          events=events if student_events is None else student_events, t_eval=times)
+                          events=events if student_events is None else student_events, t_eval=times, caps=c.caps)
     except Exception as exc:  # noqa: BLE001  (the confirmation is evidence; its failure is said, not raised)
         c.confirmed, c.evidence = False, f"not confirmed: the integration at rtol {fine.rtol:g} failed ({exc})"
         return
@@ -768,6 +863,11 @@ def confirm_refutation(comparison: Comparison, student: Rates, reference: Rates,
         fine_sep = float(np.nanmax(np.abs(stu_f.y[..., i] - ref_f.y[..., i]) / scale))
     c.confirmed = bool(np.isfinite(fine_sep) and fine_sep > 1.0 and np.isfinite(estimate)
                        and estimate < 0.1 * separation)
+    c.measured = {"confirmed": c.confirmed, "t": c.separation_time, "component": c.component,
+                  "separation": separation, "error_estimate": estimate, "finer_separation": fine_sep,
+                  "compare_rtol": acc.compare_rtol, "compare_atol": acc.compare_atol, "rtol": acc.rtol,
+                  "finer_rtol": fine.rtol, "method": method, "window": window,
+                  "refined_windows": len(c.caps), "scanned_states": c.scanned}
     c.evidence = (f"{'confirmed' if c.confirmed else 'not confirmed'}: at t = {c.separation_time:.3g} ({c.component}) "
                   f"the motions are {separation:.3g} comparison tolerances apart (rtol {acc.compare_rtol:g}, atol "
                   f"{acc.compare_atol:g}); the integration's error estimate there (the runs at rtol {acc.rtol:g} and "

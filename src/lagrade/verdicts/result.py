@@ -47,6 +47,11 @@ class PartResult(BaseModel):
                                             "instructor's view; hidden from a student's): the separation, the "
                                             "integration's error estimate at that time and the separation at the "
                                             "finer tolerance, in units of the comparison tolerance")
+    motion_evidence: dict | None = Field(default=None, description="for instructors, with `trajectory_evidence`: "
+                                         "the same as numbers (t: the time the motions separate, component, "
+                                         "separation and error_estimate and finer_separation in units of the "
+                                         "comparison tolerance, compare_rtol, compare_atol, rtol, finer_rtol, method, "
+                                         "window, refined_windows: where the student's steps were bounded)")
     detail: str | None = Field(default=None, exclude=True,
                                description="for instructors: the engine's traceback of an `error`; never "
                                            "serialized, so never in what a student is shown")

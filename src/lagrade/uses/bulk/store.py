@@ -80,6 +80,7 @@ CREATE TABLE IF NOT EXISTS parts (
     review         TEXT,                  -- for the instructor: why the evidence could not decide the verdict
     detail         TEXT,                  -- for the instructor: the engine's traceback of an `error` verdict
     certificate    TEXT,                  -- for the instructor: the exact point and enclosure proving a rejection
+    motion_evidence TEXT,                 -- for the instructor: JSON, a refutation by the motion (time, separation, error estimate, tolerances)
     file_hash      TEXT NOT NULL,
     grader_version TEXT NOT NULL,
     PRIMARY KEY (student, problem, part),
@@ -119,6 +120,7 @@ COLUMNS_ADDED = [
     ("parts", "detail", "TEXT"),
     ("submissions", "plot_png", "BLOB"),
     ("parts", "certificate", "TEXT"),
+    ("parts", "motion_evidence", "TEXT"),
 ]
 #: ``overrides`` came after SCHEMA_VERSION 1: ``CREATE TABLE IF NOT EXISTS`` adds it to an older gradebook
 #: when a writer opens it; readers of an older gradebook see no overrides (:meth:`Store.overrides`)
@@ -304,11 +306,11 @@ class Store:
                  plot_png))
             self.db.executemany(
                 "INSERT INTO parts(student, problem, part, verdict, score, max_score, method, feedback, answer_text, "
-                "answer_mathml, review, detail, certificate, file_hash, grader_version) "
-                "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                "answer_mathml, review, detail, certificate, motion_evidence, file_hash, grader_version) "
+                "VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
                 [(student, problem, p["part"], p["verdict"], p["score"], p["max_score"], p["method"], p["feedback"],
                   p.get("answer_text"), p.get("answer_mathml"), p.get("review"), p.get("detail"), p.get("certificate"),
-                  key.file_hash, key.grader_version) for p in parts])
+                  json.dumps(p["motion_evidence"]) if p.get("motion_evidence") else None, key.file_hash, key.grader_version) for p in parts])
             self.db.execute("INSERT INTO grade_log(student, problem, file_hash, grading_hash, grader_version, graded_at) "
                             "VALUES(?, ?, ?, ?, ?, ?)",
                             (student, problem, key.file_hash, key.grading_hash, key.grader_version, now))

@@ -80,7 +80,7 @@ parts = Table(
     Column("score", Float, nullable=False), Column("max_score", Float, nullable=False),
     Column("method", String(20), nullable=False), Column("feedback", Text, nullable=False),
     Column("answer_text", Text), Column("answer_mathml", Text), Column("review", Text), Column("detail", Text),
-    Column("certificate", Text),
+    Column("certificate", Text), Column("motion_evidence", Text),
     Column("file_hash", String(64), nullable=False), Column("grader_version", String(50), nullable=False),
     ForeignKeyConstraint(["student", "problem"], ["submissions.student", "submissions.problem"], ondelete="CASCADE"),
 )
@@ -569,7 +569,9 @@ class Database:
                      "score": p["score"], "max_score": p["max_score"], "method": p["method"],
                      "feedback": p["feedback"], "answer_text": p.get("answer_text"),
                      "answer_mathml": p.get("answer_mathml"), "review": p.get("review"), "detail": p.get("detail"),
-                     "certificate": p.get("certificate"), "file_hash": row.file_hash,
+                     "certificate": p.get("certificate"),
+                     "motion_evidence": json.dumps(p["motion_evidence"]) if p.get("motion_evidence") else None,
+                     "file_hash": row.file_hash,
                      "grader_version": row.grader_version} for p in result["parts"]])
             c.execute(insert(grade_log).values(student=row.student, problem=row.problem, file_hash=row.file_hash,
                                                grading_hash=row.grading_hash, grader_version=row.grader_version,

@@ -67,7 +67,7 @@ def view(server, att, who) -> dict[str, Any]:
     problem = server.problems.get(att.problem)
     kinds = {p.name: p.kind for p in problem.parts} if problem is not None else {}
     out["parts"] = [{**p, "feedback": at_level(in_words(p.get("feedback", ""), kinds.get(p["part"], "")),
-                                               p["verdict"], rules.feedback), "trajectory_evidence": None}
+                                               p["verdict"], rules.feedback), "trajectory_evidence": None, "motion_evidence": None}
                     for p in out["parts"]]
     if rules.feedback == "verdict":
         out.pop("plot", None)  # the motion against the true one says where the answer goes wrong

@@ -780,6 +780,18 @@ _ADVICE = (
 )
 
 
+#: the marks of a refusal's reason that name a switch (its motion chatters or sticks: no integrator
+#: follows it within a budget, so a flagged switch earns nothing without a proof and no motion is run)
+SWITCH_MARKS = (*_ADVICE[2][0], UNDECLARED_FRICTION, "sign(", "Abs(")
+
+
+def smooth_pending() -> bool:
+    """Something is flagged, and nothing flagged is a switch: a negligible part or a number the
+    numbers rule doubts. Its motion can be followed, and refutes it where it separates (issue 45)."""
+    reasons = pending()
+    return bool(reasons) and not any(mark in why for why in reasons for mark in SWITCH_MARKS)
+
+
 def _advice(why: str) -> str:
     said = [advice for marks, advice in _ADVICE if any(mark in why for mark in marks)]
     return "".join(f" {a}." for a in said)

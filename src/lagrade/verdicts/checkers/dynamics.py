@@ -249,7 +249,9 @@ def _confirm(ctx: Context, prove: Callable[[], bool | None], trajectory: Callabl
     integrator to its budget)."""
     if admit.pending():
         proof = prove()
-        return (proof, _try(trajectory)) if proof else (proof, None)
+        # an unproved flagged answer earns nothing; a smooth one's motion may still refute it, with
+        # that evidence (a bump outside the exact class: issue 45); a switch's is not run
+        return (proof, _try(trajectory)) if proof or admit.smooth_pending() else (proof, None)
     traj = _try(trajectory)
     proof = prove() if ctx.prove_always or traj is None or not traj.agree else None
     return proof, traj
@@ -280,8 +282,8 @@ def _decide(ctx: Context, part: Part, proof: bool | None, traj: Comparison | Non
     if traj is not None and traj.decisive:
         acc = ctx.accuracy
         res = graded(part, 0.0, "trajectory",
-                     "Incorrect: your answer agrees with the right one at every sampled state (in the sampling "
-                     f"range and along the true motion) to about {acc.sample_rtol:g} (relative), but not exactly: "
+                     "Incorrect: your answer agrees with the right one at every sampled state to about "
+                     f"{acc.sample_rtol:g} (relative), but not exactly: "
                      f"{traj.describe()} (beyond the {acc.name} comparison tolerance, rtol {acc.compare_rtol:g}). "
                      "A constant or coefficient slightly off (a rounded number, say) does this.")
         return _with_trajectory_evidence(res, traj)
@@ -301,10 +303,23 @@ def _with_trajectory_evidence(res: PartResult, traj: Comparison) -> PartResult:
             traj.confirmed, traj.evidence = False, f"not confirmed: the confirmation failed ({exc})"
     res.confirmed = bool(traj.confirmed)
     res.trajectory_evidence = traj.evidence
+    res.motion_evidence = traj.measured
     if not res.confirmed:
         res.review = ("rejected by the trajectory comparison alone, and the comparison at a 100x finer integration "
                       "tolerance did not confirm it (the evidence is in trajectory_evidence)")
     return res
+
+
+def _motion_refutes(ctx: Context, part: Part, proof: bool | None, traj: Comparison | None) -> PartResult | None:
+    """The motion decides first: motions from the same grading states that separate beyond the preset's
+    comparison tolerance, confirmed at the finer integration tolerance (the separation beyond the
+    integration's error estimate, `confirm_refutation`), refute the answer with that evidence, before
+    any rule about states. An unconfirmed separation decides nothing here: the states' evidence goes
+    on, and `_decide` flags what is left for review."""
+    if proof or traj is None or not traj.decisive:
+        return None
+    res = _decide(ctx, part, None, traj)
+    return res if res.confirmed else None
 
 
 def _wrong(part: Part, fraction: float, message: str, traj: Comparison | None, credit=None) -> PartResult:
@@ -661,6 +676,9 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
             ctx, lambda: proves_all_zero([a - b for a, b in zip(mech.lagrange_rows(L_s), mech.EL)],
                                          ctx.symbolic_seconds, ctx.positive),
             lambda: _trajectory_lagrange(ctx, mech, part, student_acc, student_rows))
+        moved = _motion_refutes(ctx, part, proof, traj)
+        if moved is not None:
+            return moved
         off = None if proof else _motion_refutation(ctx, mech, part, traj, student_rows(), False,
                                                     "the Lagrange equations your L gives")
         if off is None and not proof:
@@ -904,6 +922,9 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
     if an.fraction >= 1.0:
         proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
                                lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows))
+        moved = _motion_refutes(ctx, part, proof, traj)
+        if moved is not None:
+            return moved
         off = None if proof else _along_motion(ctx, mech, part, traj, compiled, list(mech.names))
         if off is None:
             exact = None if proof else _exact_refutation(mech, part, rows, pts, "your equation {i}", traj)
@@ -1258,6 +1279,9 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
             return None
 
         proof, traj = _confirm(ctx, prove, lambda: _trajectory_hamilton(ctx, mech, part, student_rates, student_rows))
+        moved = _motion_refutes(ctx, part, proof, traj)
+        if moved is not None:
+            return moved
         off = None if proof else _motion_refutation(ctx, mech, part, traj, student_rows(), True,
                                                     "Hamilton's equations your H gives")
         if off is None and not proof:
@@ -1353,6 +1377,9 @@ def check_hamilton_eqs(ctx: Context, part: Part, value: object) -> PartResult:
     traj, where = None, ""
     if an.fraction >= 1.0:
         traj = _try(lambda: _trajectory_hamilton(ctx, mech, part, student_rates, lambda: rows))
+        moved = _motion_refutes(ctx, part, None, traj)
+        if moved is not None:
+            return moved
         off = _along_motion(ctx, mech, part, traj, compiled, labels, phase=True)
         if off is None:
             exact = _exact_refutation(mech, part, rows, pts, "your equation {i}", traj, phase=True)
