@@ -433,8 +433,10 @@ class Part(_Strict):
     linearized: bool = Field(False, description="eom: grade the equations linearized about the equilibrium")
     unknown: str | None = Field(None, description="equation_root: the unknown the equation is solved for")
     domain: tuple[float, float] | None = Field(
-        None, description="equation_root: the interval the unknown lives in (e.g. [0, 3.14159...] for an angle "
-                          "from the vertical); an equation with another solution in it does not single out the answer")
+        None, description="equation_root: the interval the unknown lives in, its ends excluded (e.g. [0, 3.14159...] "
+                          "for an angle from the vertical, 0 < theta < pi); an equation with another solution inside "
+                          "does not single out the answer, one whose other solutions are the ends (sin(theta) = 0 "
+                          "at 0 and pi) does")
     symbols: list[str] = Field([], description="extra symbols an answer may use (initial values like theta0), "
                                                  "sampled in [0.5, 1.5]")
     symbol_ranges: dict[str, tuple[float, float]] = Field(
