@@ -258,3 +258,49 @@ def test_the_course_server_grades_a_students_check(tmp_path, monkeypatch):
     parts = {p["part"]: p for p in body["parts"]}
     assert parts["omega"]["verdict"] == "incorrect" and "Larmor" in parts["omega"]["feedback"]
     assert parts["L"]["verdict"] == "correct" and body["score"] < body["max_score"]
+
+
+# --- what the trial tripped on: a broken problem file says what to change --------------------------------
+
+def _broken(tmp: Path, old: str, new: str) -> Path:
+    text = (PROBLEMS / "bead-hoop.toml").read_text()
+    assert old in text
+    folder = tmp / "problems"
+    folder.mkdir()
+    (folder / "bead-hoop.toml").write_text(text.replace(old, new))
+    return folder
+
+
+def test_a_reference_that_cannot_be_read_names_its_part(tmp_path):
+    from lagrade.problem.spec import SpecError
+
+    folder = _broken(tmp_path, 'reference = "acos(g/(omega**2*R))"', 'reference = "acos(g/(omega**2*R)"')
+    with pytest.raises(SpecError) as exc:
+        lagrade.check("bead-hoop", COURSE / "reference" / "bead-hoop" / "answer.py", problem_dirs=(folder,))
+    said = str(exc.value)
+    assert "bead-hoop.toml" in said and "part 'equilibrium'" in said and "not well formed" in said, said
+    assert "answer" not in said and len(said.splitlines()) == 1, said
+
+
+def test_a_misspelt_name_in_the_scene_gives_its_line(tmp_path):
+    from lagrade.problem.spec import SpecError
+
+    folder = _broken(tmp_path, 'V = "-m*g*R*cos(theta)"', 'V = "-m*gg*R*cos(theta)"')
+    with pytest.raises(SpecError) as exc:
+        lagrade.check("bead-hoop", COURSE / "reference" / "bead-hoop" / "answer.py", problem_dirs=(folder,))
+    line = next(n for n, text in enumerate((folder / "bead-hoop.toml").read_text().splitlines(), 1)
+                if text.startswith("V = "))
+    assert f"bead-hoop.toml:{line}: V: unknown name 'gg' (did you mean 'g'?)" in str(exc.value), str(exc.value)
+
+
+def test_a_mistake_that_cannot_be_read_fails_the_problem_files_test(tmp_path):
+    from lagrade.problem.library import load_problem
+    from lagrade.uses.pytest_plugin import unreadable_mistakes
+    from lagrade.verdicts.grade import references
+
+    for path, want in ((PROBLEMS / "bead-hoop.toml", []),
+                       (_broken(tmp_path, "m*g*R*cos(theta)\"\nmessage", "m*g*R*cos(thetaa)\"\nmessage") / "bead-hoop.toml",
+                        [f"part '{name}', mistake 1 cannot be read (unknown name 'thetaa' (did you mean 'theta'?)), "
+                         "so it would never be named" for name in ("L", "H")])):
+        problem = load_problem(path)
+        assert unreadable_mistakes(problem, references(problem)) == want
