@@ -304,3 +304,16 @@ def test_a_mistake_that_cannot_be_read_fails_the_problem_files_test(tmp_path):
                          "so it would never be named" for name in ("L", "H")])):
         problem = load_problem(path)
         assert unreadable_mistakes(problem, references(problem)) == want
+
+
+def test_a_course_problem_not_found_says_to_name_its_folder(tmp_path, monkeypatch):
+    from lagrade.problem.library import load_problem
+    from lagrade.problem.spec import SpecError
+
+    monkeypatch.chdir(COURSE)  # problems/bead-hoop.toml is here, but not named
+    with pytest.raises(SpecError, match=r"problems/bead-hoop.toml is here: add --problems problems"):
+        load_problem("bead-hoop")
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SpecError, match=r"found with --problems DIR \(or LAGRADE_PROBLEMS=DIR\)"):
+        load_problem("bead-hoop")
+    assert load_problem("bead-hoop", (PROBLEMS,)).id == "bead-hoop"
