@@ -65,7 +65,7 @@ def test_each_problem_loads_and_derives(pid):
 
 @pytest.mark.parametrize("pid", IDS)
 def test_the_reference_gets_full_marks(pid):
-    result = _check(pid, COURSE / "reference" / pid / "answer.py")
+    result = _check(pid, COURSE / "reference_solutions" / pid / "answer.py")
     assert result.score == result.max_score, [(p.part, p.verdict, p.feedback) for p in result.parts]
 
 
@@ -276,7 +276,7 @@ def test_a_reference_that_cannot_be_read_names_its_part(tmp_path):
 
     folder = _broken(tmp_path, 'reference = "acos(g/(omega**2*R))"', 'reference = "acos(g/(omega**2*R)"')
     with pytest.raises(SpecError) as exc:
-        lagrade.check("bead-hoop", COURSE / "reference" / "bead-hoop" / "answer.py", problem_dirs=(folder,))
+        lagrade.check("bead-hoop", COURSE / "reference_solutions" / "bead-hoop" / "answer.py", problem_dirs=(folder,))
     said = str(exc.value)
     assert "bead-hoop.toml" in said and "part 'equilibrium'" in said and "not well formed" in said, said
     assert "answer" not in said and len(said.splitlines()) == 1, said
@@ -287,7 +287,7 @@ def test_a_misspelt_name_in_the_scene_gives_its_line(tmp_path):
 
     folder = _broken(tmp_path, 'V = "-m*g*R*cos(theta)"', 'V = "-m*gg*R*cos(theta)"')
     with pytest.raises(SpecError) as exc:
-        lagrade.check("bead-hoop", COURSE / "reference" / "bead-hoop" / "answer.py", problem_dirs=(folder,))
+        lagrade.check("bead-hoop", COURSE / "reference_solutions" / "bead-hoop" / "answer.py", problem_dirs=(folder,))
     line = next(n for n, text in enumerate((folder / "bead-hoop.toml").read_text().splitlines(), 1)
                 if text.startswith("V = "))
     assert f"bead-hoop.toml:{line}: V: unknown name 'gg' (did you mean 'g'?)" in str(exc.value), str(exc.value)
