@@ -244,8 +244,9 @@ def _book(db: Path):
                    "keeps the grade it has), zero (0 points), blank (an empty cell: Canvas REMOVES the grade it has).")
 @click.option("--bom", is_flag=True,
               help="Begin a CSV with a UTF-8 byte order mark, so that Excel shows accents right (Canvas reads it too).")
+@problems_option
 def export(db: Path, fmt: str, output: Path | None, student: str | None, roster: Path | None, missing: str,
-           bom: bool) -> None:
+           bom: bool, problems_dir: tuple[Path, ...]) -> None:
     """Export the grades in DB: Canvas import CSV, plain CSV, Gradescope results.json, HTML report."""
     from lagrade.uses.bulk import exports
 
@@ -257,7 +258,7 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
             raise click.UsageError("--format html writes a folder: give it with --output")
         from lagrade.uses.bulk.html_report import write_report
 
-        click.echo(str(write_report(book, output)))
+        click.echo(str(write_report(book, output, problems_dir)))
         return
     if fmt == "canvas":
         rows = _roster(roster) if roster else None
@@ -285,7 +286,7 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
         text = exports.skipped_csv(book)
     else:
         try:
-            text = exports.gradescope_json(book, student) + "\n"
+            text = exports.gradescope_json(book, student, problems_dir) + "\n"
         except (ValueError, KeyError) as exc:
             raise click.UsageError(str(exc).strip("'")) from None
     if bom:
@@ -405,7 +406,8 @@ def import_(download: Path, assignment_path: Path, output: Path, roster: Path | 
 @click.argument("db", type=GRADEBOOK_PATH)
 @click.option("--html", "html_dir", type=click.Path(file_okay=False, path_type=Path),
               help="Write the class report and one feedback page per student into this folder.")
-def report(db: Path, html_dir: Path | None) -> None:
+@problems_option
+def report(db: Path, html_dir: Path | None, problems_dir: tuple[Path, ...]) -> None:
     """The class summary of DB; with --html, a static report folder to open in a browser."""
     from rich.console import Console
 
@@ -416,7 +418,7 @@ def report(db: Path, html_dir: Path | None) -> None:
     if html_dir is not None:
         from lagrade.uses.bulk.html_report import write_report
 
-        index = write_report(book, html_dir)
+        index = write_report(book, html_dir, problems_dir)
         click.echo(f"report: {index}")
 
 

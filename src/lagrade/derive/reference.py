@@ -50,6 +50,10 @@ def split_energy(L: sp.Expr, mech: Mechanics) -> tuple[sp.Expr, sp.Expr]:
     return kin, -(sp.expand(L) - kin)
 
 
+#: the scene's fields a parse error names, for its line in the problem file
+_FIELDS = {"L": "L", "T": "T", "V": "V", "Q": "Q"}
+
+
 class Mechanics:
     """The dynamics of one system of a problem, in plain state symbols."""
 
@@ -141,6 +145,9 @@ class Mechanics:
             rows = self._rows_of[L] = [e - Qi for e, Qi in zip(euler_lagrange(L, self.s), self.Q)]
         return rows
 
+    def _where(self, what: str) -> str:
+        return f"system '{self.system.key}', {what}" if self.system.key else what
+
     def _parse(self, text: str, what: str, params: Sequence[str]) -> sp.Expr:
         extra = [c.multiplier for c in self.system.constraints if c.multiplier]
         try:
@@ -148,14 +155,16 @@ class Mechanics:
                               functions=arities(self.system))
             return sp.sympify(to_state(substitute(expr, self.functions), self.all_names))
         except Exception as exc:  # a one-line reason naming the field
-            raise SceneError(f"system '{self.system.key}', {what}: {exc}") from None
+            raise SceneError(f"{self._where(what)}: {str(exc).replace('answer is not', 'the text is not', 1)}",
+                             self.system.key, _FIELDS.get(what.split(".")[0])) from None
 
     def _parse_plain(self, text: str, what: str, names: Sequence[str]) -> sp.Expr:
         """An expression in plain symbols (a general function's concrete form, in its arguments)."""
         try:
             return sp.sympify(parse_math(text, [], known_names=[*names, "t"]))
         except Exception as exc:  # a one-line reason naming the field
-            raise SceneError(f"system '{self.system.key}', {what}: {exc}") from None
+            raise SceneError(f"{self._where(what)}: {str(exc).replace('answer is not', 'the text is not', 1)}",
+                             self.system.key, _FIELDS.get(what.split(".")[0])) from None
 
     def parse(self, text: str, extra: Sequence[str] = ()) -> sp.Expr:
         """Parse a reference expression of this system (may use ``q_dd`` and multipliers); cached,

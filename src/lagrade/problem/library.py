@@ -128,8 +128,17 @@ def problem_path(pid: str, extra: tuple[Path, ...] = ()) -> Path:
         raise SpecError(f"no problem '{pid}': {NO_DATA}")
     if pid not in index:
         known = ", ".join(list(index)[:12])
-        raise SpecError(f"no problem '{pid}' (known ids: {known}{', ...' if len(index) > 12 else ''})")
+        raise SpecError(f"no problem '{pid}' (known ids: {known}{', ...' if len(index) > 12 else ''}){_where_to_look(pid)}")
     return index[pid]
+
+
+def _where_to_look(pid: str) -> str:
+    """What to change when an id is not found: a course's own problems are found only when named, so
+    point at a ``<pid>.toml`` in a ``problems/`` folder here, or at the option."""
+    here = Path("problems") / f"{pid}.toml"
+    if here.is_file():
+        return f"; {here} is here: add --problems problems (or set LAGRADE_PROBLEMS)"
+    return "; a course's own problem files are found with --problems DIR (or LAGRADE_PROBLEMS=DIR)"
 
 
 class SceneFileError(SceneError, SpecError):

@@ -44,6 +44,36 @@ Effect = Literal[
     "small_oscillation_linearization",
 ]
 
+#: What each effect means, for the author choosing them (docs/authoring-problems.md's table): when to
+#: declare it, and what it changes. Most are labels (``lagrade show`` prints them; the derivation
+#: refuses a scene that visibly uses one it does not declare); a few switch numerical machinery on
+#: (``lagrade.derive.effects.machinery``), and those must be declared for the scene to be integrated right.
+EFFECT_MEANINGS: dict[str, str] = {
+    "gravity": "a uniform gravitational field: V uses g (required then)",
+    "spring": "an elastic force: V holds a spring's k*(stretch)**2/2",
+    "central_force": "a force toward a fixed centre, V(r)",
+    "rigid_body_rotation": "a body's rotational kinetic energy I*omega**2/2 is in T",
+    "rolling_constraint": "rolling without slipping ties a rotation to a translation",
+    "holonomic_constraint": "the bodies are held on a curve or surface (a rod, a hoop, a wire), or `constraints` "
+                            "are given (required then)",
+    "constraint_force": "a constraint's multiplier (its force) is asked: computed along the motion (required then)",
+    "time_dependent_constraint": "a constraint moves with t (a support driven, a hoop or wire turned at a given "
+                                 "rate): t becomes an argument of the equations (required when they or a constraint use t)",
+    "rotating_frame": "coordinates measured in a turning frame or on a turning body: centrifugal (and Coriolis) "
+                      "terms in T",
+    "driven_support": "a support moved by a given law x_s(t): t becomes an argument of the equations",
+    "dissipation_drag": "a velocity-dependent force in `Q` (drag): required then",
+    "dissipation_friction": "a force in `Q` that switches sign with the velocity (dry friction): required then; "
+                            "the switches are located along the motion",
+    "applied_force": "a given generalized force in `Q`, possibly of t (a `Q` requires it or a dissipation effect)",
+    "nonholonomic": "a constraint on the velocities that does not integrate to one on the coordinates",
+    "velocity_dependent_potential": "L holds terms linear in the velocities that are not kinetic energy: "
+                                    "a magnetic field's q*A.v, a rotating frame's Coriolis term",
+    "unilateral_contact": "a contact that can be lost (a normal force that may reach 0): where a constraint names "
+                          "its multiplier, the loss is located along the motion and ends the comparison",
+    "small_oscillation_linearization": "a part is `linearized = true` about `equilibrium` (required then)",
+}
+
 class Kind(NamedTuple):
     """One kind of part: what the student gives, when it is correct, what the problem file holds."""
 
@@ -403,8 +433,10 @@ class Part(_Strict):
     linearized: bool = Field(False, description="eom: grade the equations linearized about the equilibrium")
     unknown: str | None = Field(None, description="equation_root: the unknown the equation is solved for")
     domain: tuple[float, float] | None = Field(
-        None, description="equation_root: the interval the unknown lives in (e.g. [0, 3.14159...] for an angle "
-                          "from the vertical); an equation with another solution in it does not single out the answer")
+        None, description="equation_root: the interval the unknown lives in, its ends excluded (e.g. [0, 3.14159...] "
+                          "for an angle from the vertical, 0 < theta < pi); an equation with another solution inside "
+                          "does not single out the answer, one whose other solutions are the ends (sin(theta) = 0 "
+                          "at 0 and pi) does")
     symbols: list[str] = Field([], description="extra symbols an answer may use (initial values like theta0), "
                                                  "sampled in [0.5, 1.5]")
     symbol_ranges: dict[str, tuple[float, float]] = Field(
@@ -668,7 +700,10 @@ def markdown_tables() -> str:
         lines += rows(model)
     lines += ["| kind | the student gives | correct when | `reference` |", "|---|---|---|---|"]
     lines += [f"| `{name}` | {k.expects} | {k.correct_when} | {k.reference} |" for name, k in KINDS.items()]
-    lines += ["", "Effects: " + ", ".join(f"`{e}`" for e in get_args(Effect)) + "."]
+    lines += ["", "Effects (`effects = [...]` of a system): declare every one the scene involves. A scene that uses "
+              "one it does not declare, where the derivation can tell (\"required then\"), is refused with a "
+              "line naming the effect to add.", "", "| effect | declare it when |", "|---|---|"]
+    lines += [f"| `{e}` | {EFFECT_MEANINGS[e]} |" for e in get_args(Effect)]
     return "\n".join(lines)
 
 

@@ -97,6 +97,30 @@ def pytest_collect_file(file_path: Path, parent):  # noqa: D103
     return None
 
 
+#: kinds whose mistakes are read as the scene's expressions (`Mechanics.parse`), with these extra names
+_SCENE_MISTAKES = {"lagrangian": False, "eom": False, "hamiltonian": True}
+
+
+def unreadable_mistakes(problem, refs) -> list[str]:
+    """The listed mistakes of L, eom and H parts that cannot be read (a name misspelt): the grader skips
+    such a mistake, so a student who makes it would never read its sentence. One line each."""
+    out = []
+    for part in problem.parts:
+        if part.kind not in _SCENE_MISTAKES:
+            continue
+        mech = refs[part.system]
+        extra = [*part.symbols, *((str(p) for p in mech.s.p) if _SCENE_MISTAKES[part.kind] else ())]
+        for n, mistake in enumerate(part.mistakes, 1):
+            for text in mistake.answer if isinstance(mistake.answer, list) else [mistake.answer]:
+                try:
+                    mech.parse(str(text), extra)
+                except Exception as exc:  # noqa: BLE001 - each reason is reported, none raised
+                    out.append(f"part '{part.name}', mistake {n} cannot be read ({str(exc).removeprefix('reference: ')}), "
+                                "so it would never be named")
+                    break
+    return out
+
+
 class ProblemFile(pytest.File):
     def collect(self):
         yield ProblemItem.from_parent(self, name=f"problem {self.path.stem}")
@@ -113,8 +137,11 @@ class ProblemItem(pytest.Item):
             problem = load_problem(self.path)
             for system in problem.systems:
                 references(problem)[system.key]
+            unread = unreadable_mistakes(problem, references(problem))
         except (SpecError, SceneError) as exc:
             raise GradingFailure(str(exc)) from None
+        if unread:
+            raise GradingFailure(f"{self.path}: " + "; ".join(unread))
 
     def repr_failure(self, excinfo):  # noqa: D102
         if isinstance(excinfo.value, GradingFailure):

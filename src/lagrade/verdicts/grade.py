@@ -182,8 +182,9 @@ def _check(ctx: Context, part, value, gauge: bool = False) -> tuple[PartResult, 
         return (GAUGE_CHECKERS if gauge else CHECKERS)[part.kind](ctx, part, value), True
     except InvalidAnswer as exc:
         return _unusable(part, "invalid", str(exc)), True
-    except SceneError:
-        raise
+    except SceneError as exc:  # the scene derived before any part: this is the part's own text (its
+        # reference, a mistake, its initial values), so the instructor is told which part to fix
+        raise SceneError(f"part '{part.name}': {exc}", exc.system, exc.field) from exc
     except Exception:  # noqa: BLE001  (a grader bug must not sink the other parts)
         if os.environ.get("LAGRADE_DEBUG"):
             raise

@@ -345,7 +345,7 @@ def gradescope_results(book: Gradebook, student: StudentGrade, *, execution_time
     return out
 
 
-def gradescope_json(book: Gradebook, student: str | None = None) -> str:
+def gradescope_json(book: Gradebook, student: str | None = None, problems_dirs: tuple[Path, ...] = ()) -> str:
     if student is None:
         if len(book.students) != 1:
             raise ValueError(f"the database has {len(book.students)} students; name one with --student "
@@ -353,7 +353,7 @@ def gradescope_json(book: Gradebook, student: str | None = None) -> str:
         s = book.students[0]
     else:
         s = book.student(student)
-    return json.dumps(gradescope_results(book, s), indent=1)
+    return json.dumps(gradescope_results(book, s, problems_dirs=problems_dirs), indent=1)
 
 
 def skipped_csv(book: Gradebook) -> str:

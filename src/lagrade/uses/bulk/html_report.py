@@ -301,7 +301,8 @@ def _index(book: Gradebook, totals_figure: str = "") -> str:
     return _page(f"{a.title or a.name}: class report", "\n".join(out))
 
 
-def _problem_section(book: Gradebook, g: ProblemGrade, picture: str | None = None) -> str:
+def _problem_section(book: Gradebook, g: ProblemGrade, picture: str | None = None,
+                     problems_dirs: tuple[Path, ...] = ()) -> str:
     """One problem of a student's page: each part's points with the weight the total uses, the answer
     as math (a wide one scrolls in its own cell), the feedback; a message every part shares (a file
     that could not be used) is said once, above the table; ``picture``: the file name of its wrong
@@ -330,7 +331,7 @@ def _problem_section(book: Gradebook, g: ProblemGrade, picture: str | None = Non
                "<th>your answer</th><th>feedback</th></tr></thead><tbody>")
     for p, (earned, possible) in zip(g.parts, part_points(ap, g.parts, g.possible)):
         o = p.get("override")
-        feedback = "" if shared or g.outcome == "failed" else escape(student_feedback(p, g.problem))
+        feedback = "" if shared or g.outcome == "failed" else escape(student_feedback(p, g.problem, problems_dirs))
         verdict, verdict_class = p["verdict"], p["verdict"]
         if o:
             feedback = (f"<span class=\"why\">Score set by your instructor: {escape(o['reason'])} (lagrade's "
@@ -365,18 +366,21 @@ def _problem_section(book: Gradebook, g: ProblemGrade, picture: str | None = Non
     return "".join(out)
 
 
-def _student(book: Gradebook, s: StudentGrade, pictures: dict[str, str] | None = None) -> str:
+def _student(book: Gradebook, s: StudentGrade, pictures: dict[str, str] | None = None,
+             problems_dirs: tuple[Path, ...] = ()) -> str:
     a = book.assignment
     pictures = pictures or {}
     body = ["<p><a href=\"../index.html\">class report</a></p>",
             f"<h1>{escape(a.title or a.name)}: {escape(s.student)}</h1>",
             f"<p>Total <span id=\"total\" data-value=\"{s.points:.6f}\">{_n(s.points)}</span> / {_n(s.possible)} points.</p>"]
-    body += [_problem_section(book, g, pictures.get(g.problem)) for g in s.problems.values()]
+    body += [_problem_section(book, g, pictures.get(g.problem), problems_dirs) for g in s.problems.values()]
     return _page(f"{s.student}: {a.title or a.name}", "\n".join(body), depth=1)
 
 
-def write_report(book: Gradebook, folder: Path) -> Path:
-    """Write the report into ``folder`` (created; an earlier report's student pages are replaced)."""
+def write_report(book: Gradebook, folder: Path, problems_dirs: tuple[Path, ...] = ()) -> Path:
+    """Write the report into ``folder`` (created; an earlier report's student pages are replaced);
+    ``problems_dirs``: where a course's own problem files are (`--problems`), whose part kinds word
+    the feedback ("your Hamiltonian")."""
     folder = Path(folder)
     students = folder / "students"
     if students.is_dir():
@@ -393,5 +397,5 @@ def write_report(book: Gradebook, folder: Path) -> Path:
                 name = f"{slug(s.student)}-{slug(g.problem)}.png"
                 (students / name).write_bytes(g.plot_png)
                 pictures[g.problem] = name
-        (students / f"{slug(s.student)}.html").write_text(_student(book, s, pictures), encoding="utf-8")
+        (students / f"{slug(s.student)}.html").write_text(_student(book, s, pictures, problems_dirs), encoding="utf-8")
     return folder / "index.html"

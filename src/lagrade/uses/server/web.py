@@ -292,7 +292,7 @@ def class_page(path: str, request: Request):
 
     with tempfile.TemporaryDirectory(prefix="lagrade-class-") as tmp:
         try:
-            write_report(server.db.gradebook(), Path(tmp))
+            write_report(server.db.gradebook(), Path(tmp), server.config.problems_dirs)
         except Exception as exc:  # noqa: BLE001  (nothing graded yet, a database away)
             return error_page(request, 503, f"no class report yet: {exc}")
         try:  # a NUL byte or a name too long for the file system is no page either (not a 500)

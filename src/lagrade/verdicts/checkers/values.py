@@ -359,6 +359,7 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
     b = _evaluate(ref, pts, syms)
     if isinstance(value, sp.Expr) and part.unknown in _names_in(value):
         value = sp.Eq(value, 0)  # a value of theta cannot contain theta: `3*cos(theta) - 2` means = 0
+    value = _solved_for(value, part.unknown)  # `theta = acos(...)` is the value acos(...)
     if isinstance(value, sp.Equality):
         expr = read_sympy(value.lhs - value.rhs, part, mech, plain_coordinates=True, extra=[part.unknown])
         if x not in expr.free_symbols:
@@ -399,6 +400,23 @@ def check_equation_root(ctx: Context, part: Part, value: object) -> PartResult:
     if np.all(agree(a, np.degrees(b), rtol=1e-3)):
         return graded(part, 0.0, method, "Incorrect: this looks like degrees; give the angle in radians.")
     return graded(part, 0.0, method, f"Incorrect: {part.unknown} {why}.")
+
+
+def _solved_for(value: object, unknown: str) -> object:
+    """The right side of ``Eq(theta, v)`` (or the left of ``Eq(v, theta)``) with v free of theta: an
+    equation solved for the unknown states its value, graded as a value (an inverse function in v is
+    proved equal, not refused for want of a proof as the residual theta - v would be)."""
+    from sympy.core.function import AppliedUndef
+
+    if not isinstance(value, sp.Equality):
+        return value
+    for side, other in ((value.lhs, value.rhs), (value.rhs, value.lhs)):
+        name = side.name if isinstance(side, sp.Symbol) else (
+            side.func.__name__ if isinstance(side, AppliedUndef) and len(side.args) == 1
+            and getattr(side.args[0], "name", "") == "t" else None)  # theta, or theta(t)
+        if name == unknown and unknown not in _names_in(other):
+            return other
+    return value
 
 
 def _linear_in(expr: sp.Expr, x: sp.Symbol, seconds: float) -> bool:
