@@ -154,6 +154,7 @@ def test_moodles_own_worksheet_is_filled_in(moodle, tmp_path):
     assert rows["Participant 502"]["Grade"] == "4" and rows["Participant 502"]["Email address"] == "jan@example.edu"
     assert rows["Participant 504"]["Grade"] == "3.00" and rows["Participant 504"]["Feedback comments"] == "by hand"
     assert rows["Participant 504"]["Last modified (grade)"] == "Monday, 7 December 2026, 9:15 AM"
+    assert rows["Participant 504"]["Last modified (submission)"] == "-"  # Moodle's "none", kept as it wrote it
     assert "1 student folders are on no row" in res.stderr and "503_Ada_Lovelace" in res.stderr
     # Moodle's maximum grade below lagrade's total: Moodle would skip those grades: said
     sheet.write_text(sheet.read_text(encoding="utf-8").replace("4.00", "2.00"), encoding="utf-8")
@@ -262,3 +263,10 @@ def test_a_semicolon_separated_gradebook_is_read(canvas, tmp_path):
     latin.write_bytes(ROSTER.format(points="10").replace("Ada", "Adá").encode("cp1252"))
     res = _run(export, db, "--format", "canvas", "--roster", latin)
     assert res.exit_code == 2 and "CSV UTF-8" in res.stderr
+
+
+def test_a_lone_dash_is_moodles_none_not_a_formula():
+    from lagrade.uses.bulk.exports import spreadsheet_safe
+
+    assert spreadsheet_safe("-") == "-"
+    assert spreadsheet_safe("-2") == "'-2" and spreadsheet_safe("--") == "'--" and spreadsheet_safe(" -") == "' -"

@@ -330,12 +330,12 @@ def _canvas_notes(book, roster: Path | None) -> None:
     if roster is not None:
         found = exports.canvas_points_possible(book, roster)
         if found is not None and book.students and abs(found[1] - book.students[0].possible) > 1e-9:
-            total = exports.spreadsheet_safe(float(book.students[0].possible))
-            click.echo(f"lagrade: warning: Canvas's points possible for {found[0]!r} is "
-                       f"{exports.spreadsheet_safe(found[1])}, lagrade's total is {total}: Canvas would show "
-                       f"{total} as a score out of {exports.spreadsheet_safe(found[1])}; set the assignment's points "
-                       f"in Canvas to {total}, or the problems' weights in the assignment file to sum to "
-                       f"{exports.spreadsheet_safe(found[1])} (no regrade needed)", err=True)
+            column, canvas = found[0], f"{found[1]:g}"
+            total = f"{book.students[0].possible:g}"
+            click.echo(f"lagrade: warning: Canvas's points possible for {column!r} is {canvas}, lagrade's total is "
+                       f"{total}: Canvas would show {total} as a score out of {canvas}; set the assignment's points "
+                       f"in Canvas to {total}, or the problems' weights in the assignment file to sum to {canvas} "
+                       "(no regrade needed)", err=True)
     anonymous = exports.anonymous_students(book)
     if anonymous:
         click.echo(f"lagrade: {len(anonymous)} students came from an anonymous assignment (anon_<id>); "

@@ -47,6 +47,8 @@ def spreadsheet_safe(cell: str | float) -> str:
     white space is looked through (`` =1+1``: spreadsheets trim it on import and run the rest)."""
     if isinstance(cell, (int, float)):
         return _fmt(cell)
+    if cell == "-":  # "no value", as Moodle's worksheet writes it: no spreadsheet reads a lone dash as a formula
+        return cell
     return "'" + cell if cell.startswith(FORMULA_STARTS) or cell.lstrip().startswith(FORMULA_STARTS) else cell
 
 
