@@ -88,9 +88,11 @@ def test_the_image_context_holds_the_engine_alone(built):
     assert found == []
     docker = (context / "Dockerfile").read_text()
     copied = {w for line in docker.splitlines() if line.startswith("COPY") for w in line.split()[1:-1]}
-    assert copied == {"lagrade-0.1.0-py3-none-any.whl", "lagrade-pl-grade"}
+    assert copied == {"lagrade-0.1.0-py3-none-any.whl", "lagrade-pl-grade", "requirements.txt"}
+    # the pinned dependencies (issue 47) are PyPI's packages, never the problem data
+    assert "chapter12" not in (context / "requirements.txt").read_text().lower()
     assert sorted(p.name for p in context.iterdir()) == ["Dockerfile", "lagrade-0.1.0-py3-none-any.whl",
-                                                         "lagrade-pl-grade"]
+                                                         "lagrade-pl-grade", "requirements.txt"]
     assert "cache build" not in docker  # the reference cache is the key derived: not in a public image
     assert not (context / "questions").exists()  # the questions are not in the image's context
 

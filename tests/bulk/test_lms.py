@@ -372,15 +372,23 @@ def test_the_late_marker_reaches_the_gradebook(tmp_path):
 
 
 def test_importing_without_a_roster_then_exporting_with_one_is_refused(graded, tmp_path):
-    """Every student would get no grade (or 0): one line, exit 2, never a CSV."""
+    """Every student would get no grade (or 0): one line, exit 2, never a CSV. A folder a Canvas
+    download made carries its user id (issue 47): the roster's row of that ``ID`` is found."""
     tmp, db = graded
     dl = tmp_path / "download"
     dl.mkdir()
     ref = (REPO / "reference_solutions/12.3/answer.py").read_bytes()
     (dl / "lovelaceada_101_9001_12.3.py").write_bytes(ref)
     assert _import(dl, tmp_path / "subs").exit_code == 0
+    db1 = tmp_path / "imported.sqlite"
+    assert CliRunner().invoke(grade, [str(tmp_path / "subs"), "-a", str(tmp / "hw7.toml"), "--db", str(db1), "-j",
+                                      "1", "--no-summary"]).exit_code == 0
+    rows, _ = _canvas(db1, "--roster", str(tmp / "roster.csv"))
+    assert rows[2][:2] == ["Lovelace, Ada", "101"] and rows[2][-1] == "4", rows
+    (tmp_path / "plain" / "lovelaceada_101").mkdir(parents=True)  # the same folder, not from a download
+    (tmp_path / "plain" / "lovelaceada_101" / "12.3.py").write_bytes(ref)
     db2 = tmp_path / "hw7.sqlite"
-    assert CliRunner().invoke(grade, [str(tmp_path / "subs"), "-a", str(tmp / "hw7.toml"), "--db", str(db2), "-j",
+    assert CliRunner().invoke(grade, [str(tmp_path / "plain"), "-a", str(tmp / "hw7.toml"), "--db", str(db2), "-j",
                                       "1", "--no-summary"]).exit_code == 0
     for missing in ("keep", "zero"):
         res = CliRunner().invoke(export, [str(db2), "--format", "canvas", "--roster", str(tmp / "roster.csv"),

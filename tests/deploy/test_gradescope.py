@@ -235,3 +235,17 @@ def test_an_assignment_with_an_unknown_problem_is_refused(tmp_path):
     (tmp_path / "hw.toml").write_text('name = "hw"\n[[problems]]\nid = "99.99"\n')
     res = CliRunner().invoke(gradescope, ["build", str(tmp_path / "hw.toml"), "-o", str(tmp_path / "ag.zip")])
     assert res.exit_code == 2 and "99.99" in res.output and not (tmp_path / "ag.zip").exists()
+
+
+def test_the_zip_pins_its_dependencies(autograder):
+    """Issue 47: setup.sh installed the wheel's dependencies from PyPI unpinned (and pip upgraded)."""
+    from importlib.metadata import version
+
+    from lagrade.uses.deploy.pins import requirements_txt
+
+    with zipfile.ZipFile(autograder) as z:
+        setup = z.read("setup.sh").decode()
+        assert z.read("requirements.txt").decode() == requirements_txt()
+    assert f'-m pip install --quiet "pip=={version("pip")}"' in setup and "--upgrade pip" not in setup
+    assert '-m pip install -r "$SRC/requirements.txt"' in setup
+    assert '-m pip install --no-deps "$SRC"/lagrade-*.whl' in setup

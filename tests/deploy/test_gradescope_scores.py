@@ -113,3 +113,52 @@ def test_the_answer_memory_bound_on_gradescope_is_below_its_container(tmp_path, 
     with pytest.raises(SystemExit):
         bulk._gradescope_run(tmp_path, tmp_path / "hw.toml", tmp_path / "r.json", 1, ())
     assert seen["memory_mb"] == 600  # the instructor's own bound is kept
+
+
+def _extra_book(parts_toml: dict | None, answered: dict[str, str] | None) -> Gradebook:
+    """12.36 (H, hamilton; extras H_F, hamilton_F), its parts stored as the gradebook keeps them: in
+    name order, each with its extra flag; ``answered``: part -> verdict (None: not handed in)."""
+    a = parse_assignment({"name": "hw", "problems": [{"id": "12.36", "weight": 10, **(parts_toml or {})}]}, "hw")
+    if answered is None:
+        return Gradebook(a, [StudentGrade("ada", {"12.36": ProblemGrade("12.36", 0.0, 10, False,
+                                                                         reason="no file handed in")})], [], "t")
+    extras = {"H_F", "hamilton_F"}
+    stored = [{"part": n, "score": 1.0 if v == "correct" else 0.0, "max_score": 1.0, "verdict": v,
+               "feedback": v, "extra": n in extras} for n, v in sorted(answered.items())]
+    pts, possible = points(a.problems[0], stored, 10)
+    return Gradebook(a, [StudentGrade("ada", {"12.36": ProblemGrade("12.36", pts, possible, True, "graded",
+                                                                     parts=stored)})], [], "t")
+
+
+@pytest.mark.parametrize("parts_toml", [None, {"parts": {"H": 1, "hamilton": 1, "H_F": 1, "hamilton_F": 1}}])
+def test_an_extra_part_never_changes_the_test_list(parts_toml):
+    """Issue 47: the tests were the stored parts in name order (H, H_F, hamilton, ...) when handed
+    in and the problem file's order when not, and an extra's share differed between the two."""
+    cases = [None, {"H": "correct", "hamilton": "correct", "H_F": "missing", "hamilton_F": "missing"},
+             {"H": "correct", "hamilton": "incorrect", "H_F": "correct", "hamilton_F": "incorrect"},
+             {"H": "correct", "hamilton": "correct"}]  # a gradebook without the extras' rows
+    keys = []
+    for answered in cases:
+        book = _extra_book(parts_toml, answered)
+        gs = gradescope_results(book, book.students[0])
+        keys.append([(t["name"], t["number"], t["max_score"]) for t in gs["tests"]])
+        assert Decimal(str(gs["score"])) == sum(Decimal(str(t["score"])) for t in gs["tests"])
+    assert all(k == keys[0] for k in keys), keys
+    assert [k[0] for k in keys[0]] == ["12.36 H", "12.36 hamilton", "12.36 H_F", "12.36 hamilton_F"]
+    shares = [k[2] for k in keys[0]]
+    assert shares == ([5, 5, 0, 0] if parts_toml is None else [2.5, 2.5, 2.5, 2.5]), shares
+
+
+@pytest.mark.parametrize("parts_toml", [None, {"parts": {"H": 1, "hamilton": 1, "H_F": 1, "hamilton_F": 1}}])
+def test_a_wrong_extra_part_never_shows_passed(parts_toml):
+    """An extra the assignment does not count is worth 0 points, and 0 >= 0 made a wrong one "passed"."""
+    book = _extra_book(parts_toml, {"H": "correct", "hamilton": "correct", "H_F": "incorrect",
+                                    "hamilton_F": "correct"})
+    status = {t["name"]: t["status"] for t in gradescope_results(book, book.students[0])["tests"]}
+    assert status == {"12.36 H": "passed", "12.36 hamilton": "passed", "12.36 H_F": "failed",
+                      "12.36 hamilton_F": "passed"}, status
+    for verdict in ("incorrect", "missing", "invalid", "partial"):
+        book = _extra_book(parts_toml, {"H": "correct", "hamilton": "correct", "H_F": verdict,
+                                        "hamilton_F": verdict})
+        tests = gradescope_results(book, book.students[0])["tests"]
+        assert all(t["status"] == "failed" for t in tests if "_F" in t["name"]), (verdict, tests)

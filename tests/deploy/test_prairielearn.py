@@ -10,6 +10,7 @@ import base64
 import json
 import os
 import uuid
+import re
 import runpy
 import subprocess
 import sys
@@ -308,3 +309,15 @@ def test_the_grader_reads_the_problem_from_grade_tests(tmp_path):
     (root / "results" / "results.json").unlink()
     r = grade(out, root)
     assert r["gradable"] is False and "tests/" in r["format_errors"][0], r
+
+
+def test_the_image_pins_its_base_and_dependencies(built):
+    """Issue 47: ``FROM python:3.11-slim`` and an unpinned ``pip install`` of the wheel: a rebuild got
+    whatever Python and PyPI held that day."""
+    from lagrade.uses.deploy.pins import BASE_IMAGE, PINNED_IMAGE, requirements_txt
+
+    docker = (built / "image" / "Dockerfile").read_text()
+    (base,) = re.findall(r"^FROM (\S+)$", docker, flags=re.MULTILINE)
+    assert base == BASE_IMAGE and PINNED_IMAGE.match(base), base
+    assert (built / "image" / "requirements.txt").read_text() == requirements_txt()
+    assert "pip install --no-cache-dir -r /tmp/requirements.txt" in docker and "--no-deps /tmp/lagrade-" in docker

@@ -219,3 +219,112 @@ def test_the_class_page_loads_its_own_style_and_script(graded, live_url, chromiu
         assert "default-src 'none'" in csp
     finally:
         context.close()
+
+
+#: axe's rules behind issue 47's moderate findings: one <main>, content inside landmarks, headings in order
+MODERATE_RULES = ("landmark-one-main", "region", "heading-order", "landmark-no-duplicate-main", "page-has-heading-one")
+
+
+def test_after_a_check_focus_moves_to_the_result_and_it_is_announced(graded, live_url, chromium):
+    """Issue 47: after a submit the result sat 1 400 px down and nothing moved focus to it; and the
+    heading said "Attempt 6" on a student's second attempt (every student's submissions were counted)."""
+    secret = graded[0].state.server.secret
+    for other in ("focus-other-1", "focus-other-2"):  # others' attempts come first on the server
+        page = chromium.new_page(viewport=DESKTOP)
+        try:
+            sign_in(page, live_url, issue(secret, other))
+            page.goto(f"{live_url}/p/12.22")
+            page.fill('input[name="f:L"]', f"m1*x_d^2/2 + {len(other)}*g*x")
+            page.click("#submit")
+            page.locator("#result").wait_for(timeout=120000)
+        finally:
+            page.close()
+    page = chromium.new_page(viewport={"width": 1100, "height": 700})
+    try:
+        sign_in(page, live_url, issue(secret, "focus-student"))
+        for n, value in enumerate(("m1*x_d^2/2", "m1*x_d^2/2 + g*x"), start=1):
+            page.goto(f"{live_url}/p/12.22")
+            page.fill('input[name="f:L"]', value)
+            page.click("#submit")
+            page.locator('#result[data-state="graded"]').wait_for(timeout=120000)
+            page.wait_for_function("() => document.body.getAttribute('data-focused') === 'result'", timeout=15000)
+            assert page.evaluate("() => document.activeElement.id") == "result"
+            top = page.evaluate("() => document.getElementById('result').getBoundingClientRect().top")
+            assert -2 <= top < 700, top  # scrolled to (to within a pixel), not 1 400 px down
+            assert page.locator("#result [data-attempt-number]").inner_text() == str(n)
+            page.wait_for_function("() => document.getElementById('announce').textContent.length > 0", timeout=15000)
+            said = page.locator("#announce").inner_text()
+            assert said.startswith(f"Attempt {n}: ") and "points" in said and "L " in said, said
+            assert page.get_attribute("#announce", "role") == "status"
+        # an earlier attempt opened from the list: no focus moved, nothing announced
+        page.goto(live_url + page.locator("a[data-attempt='1']").get_attribute("href"))
+        page.locator("#result").wait_for(timeout=15000)
+        assert page.evaluate("() => document.activeElement === document.body")
+        assert page.locator("#announce").inner_text() == ""
+        assert page.locator("#result [data-attempt-number]").inner_text() == "1"
+    finally:
+        page.close()
+
+
+def test_axe_finds_no_landmark_or_heading_finding(graded, live_url, chromium):
+    """Issue 47: axe's moderate findings (no ``<main>``, content outside landmarks, headings out of
+    order) on the student's pages; and the page's own script runs under a CSP without 'unsafe-inline'."""
+    secret = graded[0].state.server.secret
+    context = chromium.new_context(viewport=DESKTOP)
+    refused: list[str] = []
+    context.add_init_script(_LISTEN)
+    context.on("console", lambda m: refused.append(m.text) if "CSP refused" in m.text
+               or "Content Security Policy" in m.text else None)
+    page = context.new_page()
+    found: list[str] = []
+
+    def moderate(name: str) -> None:
+        results = Axe().run(page)
+        found.extend(f"{name}: {v['id']} ({v['impact']}): {', '.join(str(n['target']) for n in v['nodes'][:3])}"
+                     for v in results.response["violations"] if v["id"] in MODERATE_RULES)
+
+    try:
+        page.goto(f"{live_url}/")
+        moderate("sign-in")
+        sign_in(page, live_url, issue(secret, "axe-moderate"))
+        moderate("problems")
+        response = page.goto(f"{live_url}/p/12.22")
+        assert "'unsafe-inline'" not in response.headers["content-security-policy"].split("script-src", 1)[1] \
+            .split(";")[0]
+        moderate("problem")
+        page.fill('input[name="f:L"]', "m1*x_d^2/2")
+        page.locator('[data-field="L"] [data-preview][data-ready="yes"] math').wait_for(timeout=15000)  # the script ran
+        page.click("#submit")
+        page.locator('#result[data-state="graded"]').wait_for(timeout=120000)
+        moderate("verdict")
+        page.goto(f"{live_url}/p/99.99")
+        moderate("error")
+    finally:
+        context.close()
+    assert not found, "\n".join(found)
+    assert not refused, refused
+
+
+def test_an_idle_session_signs_the_browser_out(graded, live_url, chromium):
+    """Issue 47: sessions lived 120 days with no idle limit; after ``session_idle_minutes`` without a
+    request the page asks to sign in again."""
+    import sqlalchemy as sa
+
+    from lagrade.uses.server.db import _session_key, server_sessions
+
+    app = graded[0]
+    context = chromium.new_context(viewport=DESKTOP)
+    page = context.new_page()
+    try:
+        sign_in(page, live_url, issue(app.state.server.secret, "idle-student"))
+        assert page.locator("[data-student]").inner_text() == "idle-student"
+        cookie = next(c["value"] for c in context.cookies() if c["name"] == "lagrade_session")
+        idle = 60 * app.state.server.config.session_idle_minutes
+        with app.state.server.db.engine.begin() as c:
+            c.execute(sa.update(server_sessions).where(server_sessions.c.key == _session_key(cookie))
+                      .values(last_seen=sa.literal(__import__("time").time() - idle - 1)))
+        page.goto(f"{live_url}/p/12.22")
+        page.wait_for_url(f"{live_url}/")
+        assert page.locator("input#token").count() == 1 and page.locator("[data-student]").count() == 0
+    finally:
+        context.close()

@@ -232,13 +232,14 @@ def _book(db: Path):
 
 @click.command("export")
 @click.argument("db", type=GRADEBOOK_PATH)
-@click.option("--format", "fmt", type=click.Choice(["canvas", "csv", "gradescope", "html", "skipped"]),
+@click.option("--format", "fmt", type=click.Choice(["canvas", "csv", "gradescope", "html", "moodle", "skipped"]),
               default="canvas", show_default=True, help="What to write.")
 @click.option("--output", "-o", type=click.Path(path_type=Path),
               help="Write here instead of stdout (a folder for --format html).")
 @click.option("--student", help="For --format gradescope: whose results.json (needed with several students).")
 @click.option("--roster", type=click.Path(exists=True, dir_okay=False, path_type=Path),
-              help="For --format canvas: a Canvas gradebook export, to use its student ids.")
+              help="For --format canvas: a Canvas gradebook export, to use its student ids. For --format moodle: "
+                   "the grading worksheet Moodle wrote, to fill in.")
 @click.option("--missing", type=click.Choice(["keep", "zero", "blank"]), default="keep", show_default=True,
               help="For --format canvas with --roster, a roster student without a folder: keep (no row: Canvas "
                    "keeps the grade it has), zero (0 points), blank (an empty cell: Canvas REMOVES the grade it has).")
@@ -251,8 +252,8 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
     from lagrade.uses.bulk import exports
 
     book = _book(db)
-    if bom and fmt not in ("canvas", "csv", "skipped"):
-        raise click.UsageError("--bom is for the CSV formats (canvas, csv, skipped)")
+    if bom and fmt not in ("canvas", "csv", "moodle", "skipped"):
+        raise click.UsageError("--bom is for the CSV formats (canvas, csv, moodle, skipped)")
     if fmt == "html":
         if output is None:
             raise click.UsageError("--format html writes a folder: give it with --output")
@@ -268,6 +269,7 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
                 f"SIS User ID, ID or Student), so every student would get {'no grade' if missing == 'keep' else missing}"
                 f"; import the download with `lagrade import ... --roster {roster}` and grade again")
         text = exports.canvas_csv(book, rows, missing=missing)
+        _canvas_notes(book, roster)
         if rows is not None:
             lost = exports.not_on_roster(book, rows)
             absent = exports.roster_without_folder(book, rows)
@@ -280,6 +282,8 @@ def export(db: Path, fmt: str, output: Path | None, student: str | None, roster:
             if lost:
                 click.echo(f"lagrade: {len(lost)} student folders are on no row of {roster} (or on a row another "
                            f"folder took) and are not in the export: {', '.join(lost)}", err=True)
+    elif fmt == "moodle":
+        text = _moodle(book, db, roster)
     elif fmt == "csv":
         text = exports.plain_csv(book)
     elif fmt == "skipped":
@@ -305,9 +309,65 @@ def _roster(path: Path) -> dict[str, dict[str, str]]:
     from lagrade.uses.bulk import exports
 
     try:
-        return exports.read_roster(path)
-    except (OSError, UnicodeDecodeError, csv.Error) as exc:
+        rows = exports.read_roster(path)
+        if exports.roster_delimiter(path) == ";":
+            click.echo(f"lagrade: {path} is semicolon-separated (Excel saves so where the comma is the decimal "
+                       "mark): read so; the export is comma-separated, as Canvas reads it", err=True)
+        return rows
+    except exports.RosterError as exc:
+        raise click.UsageError(str(exc)) from None
+    except UnicodeDecodeError:
+        raise click.UsageError(f"{path}: not UTF-8 (Excel's 'CSV' in some locales is not): give the file Canvas "
+                               "exported as it is, or save it from Excel as 'CSV UTF-8'") from None
+    except (OSError, csv.Error) as exc:
         raise click.UsageError(f"{path}: not a readable Canvas gradebook export ({exc})") from None
+
+
+def _canvas_notes(book, roster: Path | None) -> None:
+    """What the Canvas export cannot fix by itself, said on stderr: Canvas's points possible against
+    lagrade's total, and students of an anonymous assignment."""
+    from lagrade.uses.bulk import exports
+
+    if roster is not None:
+        found = exports.canvas_points_possible(book, roster)
+        if found is not None and book.students and abs(found[1] - book.students[0].possible) > 1e-9:
+            column, canvas = found[0], f"{found[1]:g}"
+            total = f"{book.students[0].possible:g}"
+            click.echo(f"lagrade: warning: Canvas's points possible for {column!r} is {canvas}, lagrade's total is "
+                       f"{total}: Canvas would show {total} as a score out of {canvas}; set the assignment's points "
+                       f"in Canvas to {total}, or the problems' weights in the assignment file to sum to {canvas} "
+                       "(no regrade needed)", err=True)
+    anonymous = exports.anonymous_students(book)
+    if anonymous:
+        click.echo(f"lagrade: {len(anonymous)} students came from an anonymous assignment (anon_<id>); "
+                   f"{exports.ANONYMOUS_ADVICE}", err=True)
+
+
+def _moodle(book, db: Path, worksheet: Path | None) -> str:
+    from lagrade.uses.bulk import exports
+
+    if not exports.moodle_students(book):
+        raise GradebookError(f"no student of {db} came from a Moodle download (their participant ids are not known): "
+                             "import Moodle's 'Download all submissions' with `lagrade import` and grade that folder")
+    if worksheet is None:
+        return exports.moodle_csv(book)
+    try:
+        rows = exports.read_moodle_worksheet(worksheet)
+    except exports.RosterError as exc:
+        raise click.UsageError(str(exc)) from None
+    except UnicodeDecodeError:
+        raise click.UsageError(f"{worksheet}: not UTF-8; give the worksheet Moodle wrote as it is") from None
+    maximum = exports.moodle_maximum(rows)
+    if maximum is not None and book.students and book.students[0].possible > maximum + 1e-9:
+        click.echo(f"lagrade: warning: Moodle's maximum grade is {maximum:g} and lagrade's total is "
+                   f"{book.students[0].possible:g}: Moodle skips a grade above its maximum; set the assignment's "
+                   f"maximum grade to {book.students[0].possible:g}, or the problems' weights to sum to {maximum:g}",
+                   err=True)
+    lost = exports.moodle_unmatched(book, rows)
+    if lost:
+        click.echo(f"lagrade: {len(lost)} student folders are on no row of {worksheet} and are not in the export: "
+                   + ", ".join(lost), err=True)
+    return exports.moodle_csv(book, rows)
 
 
 @click.command("override")

@@ -61,11 +61,13 @@ def _roster(path: Path | None) -> tuple[str, ...] | None:
               help="Serve even where the OS jail cannot be built (see `lagrade doctor`): never for students.")
 @click.option("--lti", "lti", type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help="LTI 1.3: a TOML file naming the LMS platforms students launch from (docs/server.md).")
+@click.option("--session-idle", "session_idle", type=click.FloatRange(min=1), default=480, show_default=True,
+              help="Minutes without a request after which a browser's session ends (sign in again).")
 @problems_option
 def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str, port: int, open_: bool,
           ssl_certfile: Path | None, ssl_keyfile: Path | None, https: bool, forwarded_allow_ips: str, workers: int,
           spare_graders: int, scheduler: str | None, unsafe_trusted_files: bool, lti: Path | None,
-          problems_dir: tuple[Path, ...]) -> None:
+          session_idle: float, problems_dir: tuple[Path, ...]) -> None:
     """Serve the assignment: students check answers on a web page or with `lagrade check --server`."""
     _need_server_extra()
     import uvicorn
@@ -84,7 +86,8 @@ def serve(assignment_path: Path, db: str | None, roster: Path | None, host: str,
     db = db or str(assignment_path.with_name(assignment_path.stem + "-serve.sqlite"))
     config = ServerConfig(assignment=assignment_path, db=db, roster=_roster(roster), open=open_,
                           problems_dirs=problems_dir, workers=workers, scheduler=scheduler,
-                          spare_graders=spare_graders, lti=lti, https=https or ssl_certfile is not None)
+                          spare_graders=spare_graders, lti=lti, https=https or ssl_certfile is not None,
+                          session_idle_minutes=session_idle)
     try:
         app = create_app(config)
     except NotAServerDatabase as exc:

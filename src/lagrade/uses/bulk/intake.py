@@ -7,9 +7,9 @@ Gradescope's export folders) and by the Gradescope autograder (one submission's 
 
 Canvas names each file of a "Download Submissions" zip ``<name>_<user id>_<attachment id>_<file>``
 (``studenttest_3143_207797_zipsubmission.zip`` in instructure/canvas-lms#2406; canvas-lms's
-``ContentZipper#get_filename``: ``[name, "LATE" if late, user id].join("_")`` with every non-word
-character removed and lower-cased, so ``<name>_late_<user id>_...`` when late and a name may hold
-``_``); ``anon_<anonymous id>_<attachment id>_<file>`` under anonymous grading; a resubmitted file
+``ContentZipper#get_filename``: ``[name, "LATE" if late, user id].join("_")``, the name with every
+non-word character removed and lower-cased, so ``<name>_LATE_<user id>_...`` when late (read in any
+case) and a name may hold ``_``); ``anon_<anonymous id>_<attachment id>_<file>`` under anonymous grading; a resubmitted file
 ``<file>-<n>.py``; the older ``<login>_<submission id>_<file>`` form is read as well. Files are
 grouped by Canvas user id, never by name: two students who share a name stay two. Gradescope's
 "Export Submissions" holds one ``submission_<id>/`` folder per submission and
@@ -23,13 +23,15 @@ from __future__ import annotations
 import re
 import shutil
 import stat
+import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path
 
 ANSWER_SUFFIXES = (".py", ".toml")
 #: copies and resubmissions: "12.22 (1)", "12.22(2)", "12.22-1" (Canvas), "12.22 copy"
 _COPY = re.compile(r"(\s*\(\d+\)|-\d+|\s+copy)$", re.IGNORECASE)
-_SAFE_STUDENT = re.compile(r"[^A-Za-z0-9._@+-]")
+#: a student folder keeps letters of any script (``Jan_Novák``), digits and ``._@+-``; the rest is ``_``
+_SAFE_STUDENT = re.compile(r"[^\w.@+-]")
 
 
 @dataclass(frozen=True)
@@ -194,8 +196,24 @@ MANIFEST = ".lagrade-import.json"
 
 
 def _student_folder(name: str) -> str:
-    s = _SAFE_STUDENT.sub("_", name.strip()).strip("._") or "student"
+    """A folder name for a student: accents kept whole (NFC: ``á`` is one letter, as macOS's
+    decomposed ``a`` + accent would otherwise become ``a_``), anything else that is not a letter,
+    digit or ``._@+-`` made ``_``."""
+    s = _SAFE_STUDENT.sub("_", unicodedata.normalize("NFC", name).strip()).strip("._") or "student"
     return s[:200]
+
+
+def _member_name(info) -> str:
+    """A zip member's name as its writer meant it: a name not flagged UTF-8 is decoded as CP437 by
+    Python (the zip standard's default), yet the zips of Moodle and of most tools hold UTF-8 bytes
+    without the flag (``Jan NovĂˇk`` for ``Jan Novák``); such a name is read as UTF-8 when it is that."""
+    name = info.filename
+    if info.flag_bits & 0x800:
+        return name
+    try:
+        return name.encode("cp437").decode("utf-8")
+    except (UnicodeEncodeError, UnicodeDecodeError):
+        return name
 
 
 def _unzip(archive: Path, into: Path, shown: str) -> tuple[list[Path], list[str]]:
@@ -214,7 +232,7 @@ def _unzip(archive: Path, into: Path, shown: str) -> tuple[list[Path], list[str]
             if len(members) > ZIP_MAX_MEMBERS:
                 return [], [f"{shown}: a zip of {len(members)} files (more than {ZIP_MAX_MEMBERS}): not unpacked"]
             for info in members:
-                parts = Path(info.filename.replace("\\", "/")).parts
+                parts = Path(_member_name(info).replace("\\", "/")).parts
                 mode = (info.external_attr >> 16) & 0o170000
                 if info.filename.startswith("/") or ".." in parts or mode == stat.S_IFLNK or not parts \
                         or parts[0].startswith("__MACOSX"):
@@ -247,7 +265,7 @@ def _moodle_entries(source: Path) -> list[tuple[Path, str, str, str]]:
         m = _MOODLE.match(entry.name)
         if m is None or entry.is_symlink():
             continue
-        name = "" if m["name"].lower() == "participant" else m["name"]
+        name = "" if m["name"].lower() == "participant" else unicodedata.normalize("NFC", m["name"])
         if entry.is_dir() and not m["file"]:
             for f in sorted(entry.rglob("*")):
                 if _regular(f) and not any(x.startswith(".") for x in f.relative_to(entry).parts):

@@ -11,7 +11,10 @@ Python: lagrade needs Python 3.11 (``tomllib`` in the problem, assignment and an
 Lowering the minimum would mean a second TOML parser and a 3.10 test matrix for the whole engine, so
 ``setup.sh`` installs Python 3.11 instead: from Ubuntu's own archive (``python3.11`` is in 22.04's
 universe), else from the deadsnakes PPA, unless a Python >= 3.11 is already there; lagrade goes into
-a virtual environment at ``$AUTOGRADER_ROOT/venv`` from the shipped wheel, its dependencies from PyPI.
+a virtual environment at ``$AUTOGRADER_ROOT/venv`` from the shipped wheel, its dependencies from PyPI
+at the exact versions of the shipped ``requirements.txt`` (:mod:`lagrade.uses.deploy.pins`), pip itself
+at the version of the machine that built the zip. Gradescope's base image is chosen in its settings
+(Ubuntu 22.04), not in the zip: setup.sh prints what it ran on.
 """
 
 from __future__ import annotations
@@ -31,6 +34,7 @@ set -euo pipefail
 ROOT="${AUTOGRADER_ROOT:-/autograder}"
 SRC="$ROOT/source"
 PY="${LAGRADE_SETUP_PYTHON:-}"
+grep -h '^PRETTY_NAME=' /etc/os-release 2>/dev/null || true   # the base image, in the build log
 if [ -z "$PY" ]; then
   for c in python3.13 python3.12 python3.11 python3; do
     if command -v "$c" >/dev/null 2>&1 && "$c" -c 'import sys, venv; sys.exit(sys.version_info < (3, 11))' 2>/dev/null
@@ -49,8 +53,12 @@ if [ -z "$PY" ]; then
   PY=python3.11
 fi
 "$PY" -m venv "$ROOT/venv"
-"$ROOT/venv/bin/python" -m pip install --quiet --upgrade pip
-"$ROOT/venv/bin/python" -m pip install "$SRC"/lagrade-*.whl "$SRC"/lagrade_chapter12-*.whl
+# every dependency at the version the autograder was built with (requirements.txt, exact pins), then
+# the two wheels without resolving anything more: a rebuild next term installs the same packages
+"$ROOT/venv/bin/python" -m pip install --quiet "pip==@PIP@"
+"$ROOT/venv/bin/python" -m pip install -r "$SRC/requirements.txt"
+"$ROOT/venv/bin/python" -m pip install --no-deps "$SRC"/lagrade-*.whl "$SRC"/lagrade_chapter12-*.whl
+"$ROOT/venv/bin/python" -m pip check
 # the reference cache of the assignment's problems, built once here rather than at the first submissions
 EXTRA=()
 if [ -d "$SRC/problems" ]; then EXTRA=(--problems "$SRC/problems"); fi
@@ -117,7 +125,12 @@ def build_autograder(assignment_path: Path, output: Path, problems_dirs: tuple[P
         output.parent.mkdir(parents=True, exist_ok=True)
         part = output.with_name(output.name + ".part")
         with zipfile.ZipFile(part, "w") as z:
-            _add(z, "setup.sh", SETUP_SH.encode(), executable=True)
+            from importlib.metadata import version
+
+            from lagrade.uses.deploy.pins import requirements_txt
+
+            _add(z, "setup.sh", SETUP_SH.replace("@PIP@", version("pip")).encode(), executable=True)
+            _add(z, "requirements.txt", requirements_txt().encode())
             _add(z, "run_autograder", RUN_AUTOGRADER.encode(), executable=True)
             for whl in wheels:
                 _add(z, whl.name, whl.read_bytes())

@@ -230,9 +230,13 @@ DOCKERFILE = """# lagrade's PrairieLearn external grader: the lagrade engine alo
 # a key into this folder). PrairieLearn runs linux/amd64 images: build and push with
 #   docker buildx build --platform linux/amd64 -t {image} --push .
 # (the question's info.json names this image in externalGradingOptions.image)
-FROM python:3.11-slim
+# The base is an exact release (lagrade.uses.deploy.pins.BASE_IMAGE), and requirements.txt pins every
+# dependency to the version this build was made with: a rebuild installs the same ones.
+FROM {base}
+COPY requirements.txt /tmp/
 COPY {wheel} /tmp/
-RUN pip install --no-cache-dir /tmp/{wheel} && rm /tmp/{wheel}
+RUN pip install --no-cache-dir -r /tmp/requirements.txt && pip install --no-cache-dir --no-deps /tmp/{wheel} \
+ && pip check && rm /tmp/{wheel} /tmp/requirements.txt
 COPY lagrade-pl-grade {entrypoint}
 RUN chmod 0755 {entrypoint}
 """
@@ -383,7 +387,11 @@ def build_grader(output: Path, problem_id: str = "12.43", problems_dirs: tuple[P
                 old.unlink()
         if engine.resolve() != (context / engine.name).resolve():
             shutil.copyfile(engine, context / engine.name)
-    (context / "Dockerfile").write_text(DOCKERFILE.format(image=image, wheel=engine.name, entrypoint=ENTRYPOINT))
+    from lagrade.uses.deploy.pins import BASE_IMAGE, requirements_txt
+
+    (context / "requirements.txt").write_text(requirements_txt())
+    (context / "Dockerfile").write_text(DOCKERFILE.format(image=image, wheel=engine.name, entrypoint=ENTRYPOINT,
+                                                          base=BASE_IMAGE))
     (context / "lagrade-pl-grade").write_text(ENTRY_SCRIPT)
     (context / "lagrade-pl-grade").chmod(0o755)
     try:
@@ -391,7 +399,7 @@ def build_grader(output: Path, problem_id: str = "12.43", problems_dirs: tuple[P
     except KeyInPublic:
         (context / "Dockerfile").unlink()  # no context left that docker could build and push
         raise
-    written = [f"{IMAGE_DIR}/{name}" for name in (engine.name, "Dockerfile", "lagrade-pl-grade")]
+    written = [f"{IMAGE_DIR}/{name}" for name in (engine.name, "requirements.txt", "Dockerfile", "lagrade-pl-grade")]
     _write_question(output, question, files, written, known)
     return written
 

@@ -57,5 +57,9 @@ class ServerConfig(BaseModel):
     #: always `Secure` (else they are when the request came over HTTPS, or from a trusted proxy that
     #: says so in X-Forwarded-Proto: uvicorn's --forwarded-allow-ips)
     https: bool = False
+    #: a browser's session ends after this many minutes without a request (a page, a preview, a
+    #: check); it ends anyway 120 days after sign-in (tokens.SESSION_SECONDS). A lab machine left
+    #: signed in is then signed out by the next morning.
+    session_idle_minutes: float = Field(480, gt=0)
     #: how long a check request waits for its grade before answering "queued" (202)
     wait_seconds: float = Field(120, gt=0)

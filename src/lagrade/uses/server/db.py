@@ -116,12 +116,16 @@ server_submissions = Table(
 )
 
 #: browser sessions: the cookie holds a random session id, never the student's token; the table keeps
-#: its hash (a copy of the database does not sign anyone in), and sign-out deletes the row
+#: its hash (a copy of the database does not sign anyone in), and sign-out deletes the row;
+#: ``last_seen``: when the session was last used (at most :data:`SEEN_EVERY` seconds stale), for the
+#: idle limit (``ServerConfig.session_idle_minutes``); NULL in a row of an older server (then ``created_at``)
 server_sessions = Table(
     "server_sessions", metadata,
     Column("key", String(64), primary_key=True), Column("student", String(200), nullable=False),
-    Column("created_at", Float, nullable=False),
+    Column("created_at", Float, nullable=False), Column("last_seen", Float),
 )
+#: a session's ``last_seen`` is written again only when it is older than this (not a write per request)
+SEEN_EVERY = 60.0
 
 
 class NotAServerDatabase(ValueError):
@@ -267,10 +271,12 @@ class Database:
             self.engine: Engine = create_engine(self.url, connect_args={"timeout": 30, "check_same_thread": False})
             event.listen(self.engine, "connect", _sqlite_pragmas)
             metadata.create_all(self.engine, tables=[server_submissions, server_plots, server_sessions])
+            self._add_last_seen()
         else:
             self.engine = create_engine(self.url, pool_pre_ping=True)
             metadata.create_all(self.engine)
             self._add_missing_columns()
+            self._add_last_seen()
         with self._write, self.engine.begin() as c:
             if self._meta(c, "schema_version") is None:
                 self._set_meta(c, "schema_version", str(SCHEMA_VERSION))
@@ -289,6 +295,14 @@ class Database:
                     if definition == "BLOB" and self.engine.dialect.name == "postgresql":
                         definition = "BYTEA"  # SQLite's BLOB, as PostgreSQL spells it
                     c.execute(text(f"ALTER TABLE {table} ADD COLUMN {column} {definition}"))
+
+    def _add_last_seen(self) -> None:
+        """A database of a server from before the idle limit has sessions without ``last_seen``."""
+        from sqlalchemy import inspect, text
+
+        if "last_seen" not in {c["name"] for c in inspect(self.engine).get_columns("server_sessions")}:
+            with self._write, self.engine.begin() as c:
+                c.execute(text("ALTER TABLE server_sessions ADD COLUMN last_seen FLOAT"))
 
     def close(self) -> None:
         self.release()
@@ -416,17 +430,34 @@ class Database:
         now = time.time()
         with self._write, self.engine.begin() as c:
             c.execute(delete(server_sessions).where(server_sessions.c.created_at < now - SESSION_SECONDS))
-            c.execute(insert(server_sessions).values(key=_session_key(sid), student=student, created_at=now))
+            c.execute(insert(server_sessions).values(key=_session_key(sid), student=student, created_at=now,
+                                                     last_seen=now))
         return sid
 
-    def session_student(self, sid: str, max_age: float) -> str | None:
-        """The student of a live session (not ended, younger than ``max_age`` seconds), else None."""
+    def session_student(self, sid: str, max_age: float, idle: float | None = None) -> str | None:
+        """The student of a live session (not ended, younger than ``max_age`` seconds, and used in the
+        last ``idle`` seconds), else None. A live session's use is noted (``last_seen``, at most
+        :data:`SEEN_EVERY` seconds stale); an idled-out one is deleted."""
         if not sid or len(sid) > 100:
             return None
+        key = _session_key(sid)
         with self.engine.connect() as c:
-            row = c.execute(select(server_sessions.c.student, server_sessions.c.created_at)
-                            .where(server_sessions.c.key == _session_key(sid))).first()
-        return (row[0] or None) if row is not None and time.time() - row[1] < max_age else None
+            row = c.execute(select(server_sessions.c.student, server_sessions.c.created_at,
+                                   server_sessions.c.last_seen).where(server_sessions.c.key == key)).first()
+        if row is None or not row[0]:
+            return None
+        now = time.time()
+        seen = row[2] if row[2] is not None else row[1]
+        if now - row[1] >= max_age:
+            return None
+        if idle is not None and now - seen >= idle:
+            with self._write, self.engine.begin() as c:
+                c.execute(delete(server_sessions).where(server_sessions.c.key == key))
+            return None
+        if now - seen >= SEEN_EVERY:
+            with self._write, self.engine.begin() as c:
+                c.execute(update(server_sessions).where(server_sessions.c.key == key).values(last_seen=now))
+        return row[0]
 
     def session_ended(self, sid: str) -> bool:
         """Whether a guest's signed session (:func:`lagrade.uses.server.tokens.guest_session`) was signed out."""

@@ -169,7 +169,7 @@ class Server:
             if not self.db.session_ended(cookie):  # a guest's cookie: signed, and a row only once signed out
                 return Who(guest[0], cookie)
         elif cookie:
-            student = self.db.session_student(cookie, SESSION_SECONDS)
+            student = self.db.session_student(cookie, SESSION_SECONDS, 60 * self.config.session_idle_minutes)
             if student is not None:
                 return Who(self._allowed(student), cookie)
         if self.config.open:

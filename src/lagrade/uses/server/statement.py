@@ -102,9 +102,9 @@ def statement_html(p: Problem) -> str:
     for para in re.split(r"\n\s*\n", p.statement.strip()) if p.statement else []:
         out.append(f"<p>{m.html(' '.join(para.split()))}</p>")
     if p.assumptions:
-        out.append("<h4>Assumptions</h4><ul>" + "".join(f"<li>{m.html(a)}</li>" for a in p.assumptions) + "</ul>")
+        out.append("<h3>Assumptions</h3><ul>" + "".join(f"<li>{m.html(a)}</li>" for a in p.assumptions) + "</ul>")
     if p.parameters:
-        out.append("<h4>Symbols</h4><ul>" + "".join(
+        out.append("<h3>Symbols</h3><ul>" + "".join(
             f"<li>{m.html(q.name)}{': ' + m.html(q.description) if q.description else ''}"
             f"{' (&gt; 0)' if q.positive else ''}</li>"
             for q in p.parameters) + "</ul>")
@@ -114,8 +114,8 @@ def statement_html(p: Problem) -> str:
         items += [f"<li>constraint: {m.html(f'{c.coordinate} = {c.value}')}</li>" for c in s.constraints]
         items += [f"<li>{m.html(q.name)}: {m.html(q.description)}</li>" for q in s.parameters]
         items.append(f"<li>domain: {escape(domain_text(p, s.key))}</li>")  # what an answer may rely on
-        out.append(f"<h4>{head}</h4><ul>{''.join(items)}</ul>")
-    out.append("<h4>Parts</h4><ul>")
+        out.append(f"<h3>{head}</h3><ul>{''.join(items)}</ul>")
+    out.append("<h3>Parts</h3><ul>")
     for part in p.parts:
         extra = " <i>(extra: not asked by the book; graded and shown, not counted)</i>" if part.extra else ""
         out.append(f"<li><code>{escape(part.name)}</code>: {m.html(part.prompt or part.kind)} "

@@ -23,12 +23,16 @@ from lagrade.uses.server.tokens import guest_session, login_csrf, student_of
 
 router = APIRouter(include_in_schema=False)
 templates = Jinja2Templates(directory=str(TEMPLATES))
-#: a page may use its own inline script and style, and nothing from elsewhere
-CSP = ("default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src 'self' data:; "
+#: a page runs only the scripts this server serves (/static/problem.js), none written into the page
+#: (an injected ``<script>`` or ``onclick=`` does not run); its style is its own, inline
+CSP = ("default-src 'none'; script-src 'self'; style-src 'unsafe-inline'; img-src 'self' data:; "
        "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'")
-#: the class page (the HTML report) links its own style.css and report.js: from this server only
-CLASS_CSP = CSP.replace("script-src 'unsafe-inline'", "script-src 'self' 'unsafe-inline'") \
-    .replace("style-src 'unsafe-inline'", "style-src 'self' 'unsafe-inline'")
+#: the class page (the HTML report, which also opens from a folder: its error catcher is inline)
+#: links its own style.css and report.js: from this server only
+CLASS_CSP = ("default-src 'none'; script-src 'self' 'unsafe-inline'; style-src 'self' 'unsafe-inline'; "
+             "img-src 'self' data:; connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'")
+#: the pages' own scripts
+STATIC = Path(__file__).parent / "static"
 #: the sign-in form's nonce (see tokens.login_csrf), for the sign-in pages only
 LOGIN_COOKIE = "lagrade_login"
 
@@ -210,7 +214,17 @@ def _problem_context(request: Request, who: Who, pid: str) -> dict:
             "rules": standing(server, who.student, pid, who.instructor),
             "template": server.text("template", pid), "fields": server.fields(pid), "csrf": server.csrf(who),
             "attempts": rows(server, server.db.attempts(who.student, pid, limit=20), who), "result": None, "error": None,
-            "values": {}}
+            "values": {}, "fresh": False}
+
+
+@router.get("/static/{name}")
+def static(name: str):
+    """The pages' own scripts (``problem.js``): files of this package, never a path from the request."""
+    files = {f.name: f for f in STATIC.glob("*.js")}
+    if name not in files:
+        raise HTTPException(404, f"no file {name[:80]!r} here")
+    return Response(files[name].read_bytes(), media_type="text/javascript; charset=utf-8",
+                    headers={"X-Content-Type-Options": "nosniff", "Cache-Control": "no-cache"})
 
 
 @router.get("/p/{pid}", response_class=HTMLResponse)
@@ -240,6 +254,7 @@ async def problem_check(pid: str, request: Request):
     form = await request.form(max_files=1, max_fields=200)
     server.require_csrf(who, str(form.get("csrf", "")))
     ctx = _problem_context(request, who, pid)
+    ctx["fresh"] = True  # focus goes to the result, or to the reason there is none (static/problem.js)
     upload = form.get("file")
     values: dict = {}
     if upload is not None and not isinstance(upload, str) and upload.filename:
