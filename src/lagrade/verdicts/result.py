@@ -111,6 +111,10 @@ class CheckResult(BaseModel):
                 f"</caption><tr><th>part</th><th>verdict</th><th>score</th><th>decided by</th>"
                 f"<th>your answer, as read</th><th>feedback</th></tr>{rows}</table>{img}</div>")
 
+    def _repr_pretty_(self, printer, cycle: bool) -> None:
+        """IPython's text (a terminal, a notebook's text/plain): the table ``print(result)`` shows."""
+        printer.text(render_text(self))
+
     def _repr_markdown_(self) -> str:
         """The same as Markdown (front ends that show Markdown and math, not HTML)."""
         cell = lambda text: html.escape(text).replace("|", "\\|").replace("\n", " ")  # noqa: E731
