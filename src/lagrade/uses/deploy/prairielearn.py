@@ -59,7 +59,7 @@ class JobParams(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     problem: str = Field(min_length=1, max_length=100)
-    file: str = Field("answer.py", pattern=r"^[A-Za-z0-9_.-]{1,100}\.(py|toml)$")
+    file: str = Field("answer.py", pattern=r"^[A-Za-z0-9_.-]{1,100}\.(py|toml|ipynb)$")
     accuracy: Literal["fast", "default", "strict"] = "default"
 
 
