@@ -196,7 +196,7 @@ def test_the_result_shows_the_answer_as_read_and_the_picture_of_a_wrong_motion()
     wrong = lagrade.check("12.22", L=None, eom=wrong_eom)
     assert wrong.verdicts()["L"] == "missing" and wrong.verdicts()["eom"] == "incorrect"
     page = wrong._repr_html_()
-    assert r"$\ddot{x} = g,\quad" in page and "<b>incorrect</b>" in page and "separates" in page
+    assert r"<code>eom</code> = $\ddot{x} = g,\quad" in page and "<b>incorrect</b>" in page and "separates" in page
     assert page.count("data:image/png;base64,") == 1
     assert "data:image/png;base64," in wrong._repr_markdown_() and "| eom | **incorrect** |" in wrong._repr_markdown_()
     right = lagrade.check("12.22", REFERENCE)

@@ -92,24 +92,27 @@ class CheckResult(BaseModel):
         return self._picture or None
 
     def _repr_html_(self) -> str:
-        """In Jupyter: the verdicts, the answer as read (LaTeX, typeset by the notebook), the feedback
-        and the picture of a wrong motion. Everything that may quote the student is escaped."""
+        """In Jupyter: the answer as read (LaTeX, typeset by the notebook), then the verdicts and the
+        feedback, then the picture of a wrong motion; as the terminal shows it. Everything that may
+        quote the student is escaped."""
         esc = html.escape
         notes = "".join(f"<li>{esc(p)}</li>" for p in self.problems)
+        read = "".join(f'<li><code>{esc(p.part)}</code> = ${esc(p.read_as)}$</li>' for p in self.parts if p.read_as)
         rows = "".join(
             f"<tr><td>{esc(p.part)}{' (extra)' if p.extra else ''}</td>"
             f"<td style=\"color:{_HTML_COLOUR[p.verdict]}\"><b>{p.verdict}</b></td>"
             f"<td>{p.score:g}/{p.max_score:g}</td><td>{p.method}</td>"
-            f"<td>{'$' + esc(p.read_as) + '$' if p.read_as else ''}</td>"
             f"<td style=\"text-align:left\">{esc(p.feedback)}</td></tr>" for p in self.parts)
         png = self.picture()
         img = (f'<p>Your motion against the true one, for the wrong dynamics parts:</p>'
                f'<img alt="your motion against the true one" src="data:image/png;base64,{_b64(png)}">'
                if png else "")
         return (f"<div class=\"lagrade-result\">{f'<ul>{notes}</ul>' if notes else ''}"
-                f"<table><caption>Problem {esc(self.problem)}: {self.score:g} / {self.max_score:g}"
+                + (f"<p><b>Your answer, as lagrade read it:</b></p><ul style=\"list-style:none; overflow-x:auto\">"
+                   f"{read}</ul>" if read else "")
+                + f"<table><caption>Problem {esc(self.problem)}: {self.score:g} / {self.max_score:g}"
                 f"</caption><tr><th>part</th><th>verdict</th><th>score</th><th>decided by</th>"
-                f"<th>your answer, as read</th><th>feedback</th></tr>{rows}</table>{img}</div>")
+                f"<th>feedback</th></tr>{rows}</table>{img}</div>")
 
     def _repr_pretty_(self, printer, cycle: bool) -> None:
         """IPython's text (a terminal, a notebook's text/plain): the table ``print(result)`` shows."""
