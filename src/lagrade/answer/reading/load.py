@@ -88,8 +88,6 @@ def start_loading(path: Path, problem: Problem, limits=None,
     return lambda: LoadedAnswer(problems=[wrong], fatal=wrong)
 
 
-
-
 def _start_notebook(path: Path, problem: Problem, names: dict[str, str], limits,
                     bound: Callable[[], AbstractContextManager]) -> Callable[[], LoadedAnswer]:
     """A notebook's code cells run as an ``answer.py`` would (`lagrade.answer.reading.notebook`): the same
