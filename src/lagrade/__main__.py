@@ -8,7 +8,7 @@ import sys
 
 def run() -> None:
     args = sys.argv[1:]
-    if args[:1] == ["check"] and any(a.endswith(".py") for a in args[1:]):
+    if args[:1] == ["check"] and any(a.endswith((".py", ".ipynb")) for a in args[1:]):
         from lagrade.answer.jail import zygote
 
         zygote.start()  # 0.2 s earlier than the check command could (importing the CLI takes that)

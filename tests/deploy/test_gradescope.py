@@ -156,6 +156,29 @@ def test_a_hostile_submission_is_contained(autograder, tmp_path):
     assert data["score"] == 0 and not sentinel.exists()
 
 
+def test_a_notebook_gets_what_the_same_answer_py_gets(autograder, tmp_path):
+    """Gradescope's students hand in Jupyter notebooks too: their code cells, graded in the same jail."""
+    sys.path.insert(0, str(REPO / "tests"))
+    from notebook_files import as_notebook, code, notebook
+
+    sources = {"12.3": REPO / "tests/answers/12.3/wrong_forgets_second_spring_on_x1.py",
+               "12.43": REPO / "reference_solutions/12.43/answer.py"}
+    as_py = run_autograder(autograder, tmp_path / "py", {f"{pid}.py": path for pid, path in sources.items()})
+    (tmp_path / "nb").mkdir()
+    as_nb = run_autograder(autograder, tmp_path / "nb", {
+        f"{pid}.ipynb": as_notebook(path.read_text(), tmp_path / f"{pid}.ipynb") for pid, path in sources.items()})
+    check_results(as_nb)
+    assert [(t["name"], t["score"], t["status"]) for t in as_nb["tests"]] == \
+        [(t["name"], t["score"], t["status"]) for t in as_py["tests"]]
+    assert 0 < as_nb["score"] < TOTAL
+    sentinel = tmp_path / "pwned"
+    hostile = tmp_path / "hostile.ipynb"
+    hostile.write_text(json.dumps(notebook([code(f"open({str(sentinel)!r}, 'w').write('x')\nH = 1")])))
+    data = run_autograder(autograder, tmp_path / "hostile", {"12.43.ipynb": hostile})
+    check_results(data)
+    assert data["score"] == 0 and not sentinel.exists()
+
+
 def test_lagrade_failing_still_leaves_a_result(autograder, tmp_path):
     """A broken install (here: a Python without lagrade) must not leave the student with no result."""
     data = run_autograder(autograder, tmp_path / "root", {"12.3.py": b"L = 1\n"},

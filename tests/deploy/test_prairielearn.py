@@ -260,6 +260,19 @@ def test_a_wrong_answer_gets_its_plot(built, tmp_path):
     assert not any(t["message"].lower().startswith(t["description"] + ":") for t in r["tests"])
 
 
+def test_a_notebook_is_graded_as_the_same_answer_py(built, tmp_path):
+    """A student who submits the Jupyter notebook they worked in: its code cells, in the same jail."""
+    sys.path.insert(0, str(REPO / "tests"))
+    from notebook_files import as_notebook
+
+    for source in (REPO / "reference_solutions/12.43/answer.py", REPO / "tests/answers/12.43/wrong_sign_of_V.py"):
+        nb = as_notebook(source.read_text(), tmp_path / "answer.ipynb").read_bytes()
+        as_nb = grade(built, job(built, tmp_path / f"nb-{source.stem}", {"answer.ipynb": nb}))
+        as_py = grade(built, job(built, tmp_path / f"py-{source.stem}", {"answer.py": source.read_bytes()}))
+        assert as_nb["gradable"] and as_nb["score"] == as_py["score"]
+        assert [(t["name"], t["points"]) for t in as_nb["tests"]] == [(t["name"], t["points"]) for t in as_py["tests"]]
+
+
 def test_a_broken_file_is_not_gradable(built, tmp_path):
     r = grade(built, job(built, tmp_path / "grade", {"answer.py": b"from sympy import *\nH = (m*\n"}))
     assert r["gradable"] is False and r["format_errors"] and "syntax" in " ".join(r["format_errors"]).lower()

@@ -37,7 +37,7 @@ from lagrade.cli.common import fail, leave, problems_option
 def check(problem_id: str, answer: Path, as_json: bool, accuracy: str, only: tuple[str, ...], hints: bool,
           credit_file: Path | None, plot_file: Path | None, grading_seconds: float | None,
           server: str | None, token: str | None, problems_dir: tuple[Path, ...]) -> None:
-    """Grade ANSWER (answer.py or answer.toml) for PROBLEM_ID."""
+    """Grade ANSWER (answer.py, answer.toml or a Jupyter notebook, answer.ipynb) for PROBLEM_ID."""
     if server:  # the server grades: no problem data, no reference here
         from lagrade.cli.serve import check_on_server
 

@@ -95,14 +95,21 @@ def show(problem_id: str | None, schema: str | None, figure_file: Path | None, s
 
 @click.command()
 @click.argument("problem_id")
+@click.option("--notebook", is_flag=True, help="A Jupyter notebook instead (answer.ipynb): the statement, one cell "
+                                                "per part and a cell that checks the answer (docs/notebooks.md).")
 @server_option
 @token_option
 @problems_option
-def template(problem_id: str, server: str | None, token: str | None, problems_dir: tuple[Path, ...]) -> None:
-    """A skeleton answer.py with every part as a name to fill."""
+def template(problem_id: str, notebook: bool, server: str | None, token: str | None,
+             problems_dir: tuple[Path, ...]) -> None:
+    """A skeleton answer.py with every part as a name to fill (--notebook: answer.ipynb)."""
     if server:
+        if notebook:
+            raise click.UsageError("--notebook is made from the problem file: not with --server (use "
+                                   "'lagrade template ID --server URL' for answer.py)")
         click.echo(_from_server(server, token, problem_id, "template"), nl=False)
         return
-    from lagrade.problem.describe import template_text
+    from lagrade.problem.describe import notebook_text, template_text
 
-    click.echo(template_text(problem_or_usage_error(problem_id, problems_dir)), nl=False)
+    problem = problem_or_usage_error(problem_id, problems_dir)
+    click.echo((notebook_text if notebook else template_text)(problem), nl=False)

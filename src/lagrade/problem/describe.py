@@ -147,3 +147,96 @@ def typing_help(p: Problem) -> str:
     others = f"; likewise {', '.join(c + chr(39) for c in coords[1:])}" if len(coords) > 1 else ""
     return (f"Typing an answer: the rates of {first} are written {spellings(first)}{others}; a power is x^2 or x**2; "
             "an equation is Eq(lhs, rhs) or lhs == rhs.")
+
+
+#: words of the statements that are names of symbols too: left as words, not set as math
+_WORDS = frozenset({"a", "A", "I"})
+
+
+def _with_math(text: str, names: list[str]) -> str:
+    """``text`` with each symbol name set as inline math (``m1`` -> ``$m_{1}$``), for Markdown."""
+    import re
+
+    import sympy as sp
+
+    names = sorted((n for n in set(names) if n not in _WORDS), key=len, reverse=True)
+    if not names:
+        return text
+    pattern = re.compile(r"(?<![\w$'.])(" + "|".join(map(re.escape, names)) + r")(\(t\))?(?![\w'$])")
+    return pattern.sub(lambda m: f"${sp.latex(sp.Symbol(m.group(1)))}{m.group(2) or ''}$", text)
+
+
+def notebook_text(p: Problem) -> str:
+    """A Jupyter notebook to answer ``p`` in (``lagrade template ID --notebook``): the statement as
+    Markdown with math, how to write the answer, the symbols' cell, one code cell per part (None: not
+    answered yet) and a last cell, tagged ``lagrade-check``, that checks the answer where it is
+    written. The grader reads the code cells and leaves that cell out
+    (`lagrade.answer.reading.notebook`). nbformat 4.5, written as JSON: no Jupyter needed to make it."""
+    import json
+
+    coords = list(dict.fromkeys(c.name for s in p.systems for c in s.coordinates))
+    names = [q.name for s in p.systems for q in p.parameters_of(s.key)] + coords
+    math = lambda text: _with_math(text, names)  # noqa: E731
+    intro = [f"# Problem {p.id}: {p.title}", ""]
+    if p.statement:
+        intro += [math(" ".join(p.statement.split())), ""]
+    if p.assumptions:
+        intro += ["**Assumptions**", ""] + [f"- {math(a)}" for a in p.assumptions] + [""]
+    if p.parameters:
+        intro += ["**Parameters** (symbols, matched by name)", "", "| symbol | name | meaning |", "|---|---|---|"]
+        intro += [f"| {math(q.name) if q.name not in _WORDS else '$' + q.name + '$'} | `{q.name}` | "
+                  f"{q.description}{' (> 0)' if q.positive else ''} |" for q in p.parameters]
+        intro.append("")
+    for s in p.systems:
+        label = f"**System ({s.key})** {s.title}".rstrip() if s.key else "**Coordinates** (functions of $t$)"
+        intro += [label, ""] + [f"- {math(c.name + '(t)')} (`{c.name}`): {c.description}" for c in s.coordinates]
+        intro += [f"- parameter {math(q.name)} (`{q.name}`): {q.description}" for q in s.parameters]
+        intro += [f"- function `{f.name}({', '.join(f.args)})`: {f.description or 'a general function'}; "
+                  f"{special_cases(f)}" for f in s.functions]
+        intro += [f"- domain: {domain_text(p, s.key)}", ""]
+    how = ["## How to answer", "",
+           f"Fill in one cell per part below (`None` means not answered yet), then run the last cell: it checks "
+           f"your answer here. `lagrade check {p.id} answer.ipynb` grades the saved notebook from a terminal, "
+           f"and your course may collect the notebook itself. Only the code cells are read, never their "
+           f"outputs; Markdown cells and IPython's `%` and `!` lines are left out.", "",
+           f"- A coordinate such as `{coords[0] if coords else 'q'}` stands for a function of time: its rate is "
+           f"`{coords[0] if coords else 'q'}.diff(t)` (or `dot({coords[0] if coords else 'q'})`), its acceleration "
+           f"`{coords[0] if coords else 'q'}.diff(t, 2)`.",
+           "- An equation is `Eq(lhs, rhs)`, or an expression meaning `= 0`; a power is `x**2`.",
+           "- `from lagrade.answer import *` gives sympy's names and `t`, `coordinates`, `parameters`, "
+           "`momenta`, `dot`."]
+    typing = typing_help(p)
+    if typing:
+        how += ["", typing.replace("Typing an answer:", "Typed as text (answer.toml, the course page):", 1)]
+    setup = template_text(p).split("\n")
+    first_part = next((i for i, line in enumerate(setup) if line.startswith("# ") and i > 3
+                       and any(line.startswith(f"# {part.prompt or part.kind}:") for part in p.parts)), len(setup))
+    cells = [_cell("markdown", "\n".join(intro).rstrip()), _cell("markdown", "\n".join(how)),
+             _cell("code", "\n".join(line for line in setup[2:first_part]).strip())]
+    for part in p.parts:
+        extra = " (extra: not asked by the book; graded and shown, not counted in the total)" if part.extra else ""
+        expects = KINDS[part.kind].expects
+        if part.kind == "expression" and isinstance(part.reference, dict):
+            expects = f"dict with keys {', '.join(repr(k) for k in part.reference)}"
+        cells.append(_cell("markdown", f"**`{part.name}`**: {math(part.prompt or part.kind)}{extra}  \n{expects}"))
+        shape = (f"  # {{{', '.join(f'{k!r}: ...' for k in part.reference)}}}"
+                 if part.kind == "expression" and isinstance(part.reference, dict) else "")
+        cells.append(_cell("code", f"{part.name} = None{shape}"))
+    call = ", ".join(f"{part.name}={part.name}" for part in p.parts)
+    cells.append(_cell("markdown", "## Check your answer"))
+    cells.append(_cell("code", f"import lagrade\nlagrade.check({p.id!r}, {call})", tags=["lagrade-check"]))
+    for i, cell in enumerate(cells):
+        cell["id"] = f"lagrade-{i}"
+    nb = {"cells": cells, "metadata": {"kernelspec": {"display_name": "Python 3", "language": "python",
+                                                      "name": "python3"},
+                                       "language_info": {"name": "python"}},
+          "nbformat": 4, "nbformat_minor": 5}
+    return json.dumps(nb, indent=1, ensure_ascii=False) + "\n"
+
+
+def _cell(kind: str, text: str, tags: list[str] | None = None) -> dict:
+    cell = {"cell_type": kind, "metadata": {"tags": tags} if tags else {},
+            "source": text.splitlines(keepends=True)}
+    if kind == "code":
+        cell.update(execution_count=None, outputs=[])
+    return cell

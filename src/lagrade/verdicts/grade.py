@@ -453,7 +453,7 @@ def check(problem: str | Path | Problem, answer: str | Path | None = None, *, pr
     problem does not have. An unusable answer file is not an error: its parts are invalid, with why
     (:func:`unusable`)."""
     path = Path(answer) if answer is not None else None
-    if path is not None and path.suffix == ".py":
+    if path is not None and path.suffix in (".py", ".ipynb"):
         from lagrade.answer.jail import zygote
 
         zygote.current()  # started by the console script already (lagrade.__main__), or now: it imports sympy

@@ -85,13 +85,68 @@ class CheckResult(BaseModel):
     def __str__(self) -> str:
         return render_text(self)
 
+    #: how to draw the picture of the wrong dynamics parts (a PNG, or None when there is none): set by
+    #: ``lagrade.check`` (locally, or fetched from the course server); drawn once, when first shown
+    _picture: object = PrivateAttr(default=None)
+
+    def picture(self) -> bytes | None:
+        """The PNG of the wrong dynamics parts' motion against the true one, as ``lagrade check --plot``
+        draws it, or None (every dynamics part right, or no way to draw it here)."""
+        if callable(self._picture):
+            self._picture = self._picture() or b""
+        return self._picture or None
+
     def _repr_html_(self) -> str:
+        """In Jupyter: the answer as read (LaTeX, typeset by the notebook), then the verdicts and the
+        feedback, then the picture of a wrong motion; as the terminal shows it. Everything that may
+        quote the student is escaped."""
+        esc = html.escape
+        notes = "".join(f"<li>{esc(p)}</li>" for p in self.problems)
+        read = "".join(f'<li><code>{esc(p.part)}</code> = ${esc(p.read_as)}$</li>' for p in self.parts if p.read_as)
         rows = "".join(
-            f"<tr><td>{html.escape(p.part)}</td><td>{p.verdict}</td><td>{p.score:g}/{p.max_score:g}</td>"
-            f"<td>{p.method}</td><td>{html.escape(p.feedback)}</td></tr>" for p in self.parts)
-        return (f"<table><caption>Problem {html.escape(self.problem)}: {self.score:g} / {self.max_score:g}"
+            f"<tr><td>{esc(p.part)}{' (extra)' if p.extra else ''}</td>"
+            f"<td style=\"color:{_HTML_COLOUR[p.verdict]}\"><b>{p.verdict}</b></td>"
+            f"<td>{p.score:g}/{p.max_score:g}</td><td>{p.method}</td>"
+            f"<td style=\"text-align:left\">{esc(p.feedback)}</td></tr>" for p in self.parts)
+        png = self.picture()
+        img = (f'<p>Your motion against the true one, for the wrong dynamics parts:</p>'
+               f'<img alt="your motion against the true one" src="data:image/png;base64,{_b64(png)}">'
+               if png else "")
+        return (f"<div class=\"lagrade-result\">{f'<ul>{notes}</ul>' if notes else ''}"
+                + (f"<p><b>Your answer, as lagrade read it:</b></p><ul style=\"list-style:none; overflow-x:auto\">"
+                   f"{read}</ul>" if read else "")
+                + f"<table><caption>Problem {esc(self.problem)}: {self.score:g} / {self.max_score:g}"
                 f"</caption><tr><th>part</th><th>verdict</th><th>score</th><th>decided by</th>"
-                f"<th>feedback</th></tr>{rows}</table>")
+                f"<th>feedback</th></tr>{rows}</table>{img}</div>")
+
+    def _repr_pretty_(self, printer, cycle: bool) -> None:
+        """IPython's text (a terminal, a notebook's text/plain): the table ``print(result)`` shows."""
+        printer.text(render_text(self))
+
+    def _repr_markdown_(self) -> str:
+        """The same as Markdown (front ends that show Markdown and math, not HTML)."""
+        cell = lambda text: html.escape(text).replace("|", "\\|").replace("\n", " ")  # noqa: E731
+        lines = [f"**Problem {cell(self.problem)}: {self.score:g} / {self.max_score:g}**", ""]
+        lines += [f"- {cell(p)}" for p in self.problems] + ([""] if self.problems else [])
+        lines += ["| part | verdict | score | your answer, as read | feedback |", "|---|---|---|---|---|"]
+        for p in self.parts:
+            shown = f"${html.escape(p.read_as).replace('|', chr(92) + 'vert ')}$" if p.read_as else ""
+            lines.append(f"| {cell(p.part)} | **{p.verdict}** | {p.score:g}/{p.max_score:g} | {shown} | "
+                         f"{cell(p.feedback)} |")
+        png = self.picture()
+        if png:
+            lines += ["", f"![your motion against the true one](data:image/png;base64,{_b64(png)})"]
+        return "\n".join(lines) + "\n"
+
+
+def _b64(data: bytes) -> str:
+    import base64
+
+    return base64.b64encode(data).decode("ascii")
+
+
+_HTML_COLOUR = {"correct": "green", "partial": "darkorange", "incorrect": "red", "missing": "purple",
+                "invalid": "red", "error": "darkred"}
 
 
 _STYLE = {"correct": "green", "partial": "yellow", "incorrect": "red", "missing": "magenta", "invalid": "red", "error": "bold red"}

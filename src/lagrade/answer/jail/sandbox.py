@@ -35,7 +35,7 @@ from lagrade.answer.jail.screen import (
 
 from lagrade.answer.jail.child import JAIL_FAILED, STDOUT_KEEP, ChildReport, SandboxLimits, reap_child
 
-__all__ = ["AnswerProblem", "EncodedValue", "SandboxLimits", "SandboxOutcome", "run_answer_file"]
+__all__ = ["AnswerProblem", "EncodedValue", "SandboxLimits", "SandboxOutcome", "run_answer_file", "start_answer_source"]
 
 
 class SandboxOutcome(BaseModel):
@@ -90,6 +90,16 @@ def start_answer_file(path: Path, wanted: Sequence[str], limits: SandboxLimits =
         return fail("error", "the file is not valid UTF-8 text")
     except OSError as exc:
         return fail("error", f"cannot read the file: {exc.strerror or exc}")
+    return start_answer_source(source, path, wanted, limits)
+
+
+def start_answer_source(source: str, path: Path, wanted: Sequence[str],
+                        limits: SandboxLimits = SandboxLimits()) -> RunningAnswer:
+    """Screen ``source`` and start it in a sandbox child as if it were the file ``path``: an answer
+    held as Python text inside another file (a notebook's code cells, `lagrade.answer.reading.notebook`)
+    goes through the same screen and the same jail as an ``answer.py``."""
+    path = Path(path)
+    name = path.name
     problems = screen_source(source, name) if TRIPWIRES else []
     if problems:
         syntax = any(p.message.startswith(("syntax error", "cannot parse")) for p in problems)

@@ -16,6 +16,7 @@ import sympy as sp
 
 from lagrade.answer.jail.rebuild import RebuildError, decode_value
 from lagrade.answer.jail.screen import AnswerProblem
+from lagrade.answer.reading.suffixes import ANSWER_KINDS
 from lagrade.answer.reading.text import load_toml_answer
 from lagrade.problem.spec import Problem
 
@@ -81,8 +82,41 @@ def start_loading(path: Path, problem: Problem, limits=None,
             with bound():
                 return _finish_py(path, problem, names, outcome)
         return finish_py
-    wrong = AnswerProblem(file=str(path), line=None, message="an answer file must be a .py or a .toml file")
+    if path.suffix == ".ipynb":
+        return _start_notebook(path, problem, names, limits, bound)
+    wrong = AnswerProblem(file=str(path), line=None, message=ANSWER_KINDS)
     return lambda: LoadedAnswer(problems=[wrong], fatal=wrong)
+
+
+def _start_notebook(path: Path, problem: Problem, names: dict[str, str], limits,
+                    bound: Callable[[], AbstractContextManager]) -> Callable[[], LoadedAnswer]:
+    """A notebook's code cells run as an ``answer.py`` would (`lagrade.answer.reading.notebook`): the same
+    screen and jail. Its problems name the cell and the line in it; what was left out is said once each;
+    a part bound to None (the template's placeholder) is not answered yet, not invalid."""
+    from lagrade.answer.jail.sandbox import SandboxLimits, start_answer_source
+    from lagrade.answer.reading.notebook import NotebookError, read_notebook
+
+    try:
+        nb = read_notebook(path)
+    except NotebookError as exc:
+        unreadable = AnswerProblem(file=path.name, line=None, message=str(exc))
+        return lambda: LoadedAnswer(problems=[unreadable], fatal=unreadable, status="error")
+    running = start_answer_source(nb.source, path, list(names), limits or SandboxLimits())
+
+    def finish_notebook() -> LoadedAnswer:
+        outcome = running.wait()
+        placeholders = tuple(f"'{name}' is a NoneType" for name in names)
+        held = [p for p in outcome.problems if p.message.startswith(placeholders)]
+        outcome = outcome.model_copy(update={"problems": [
+            p.model_copy(update={"file": f"{path.name} ({nb.where(p.line)})", "line": None}) if nb.where(p.line)
+            else p for p in outcome.problems if p not in held]})
+        with bound():
+            out = _finish_py(path, problem, names, outcome)
+        if held:  # the template's names, none filled in yet: no "did you mean 'L' for 'L'"
+            out.problems = [p for p in out.problems if not p.message.startswith("no expected name found")]
+        out.problems[:0] = [AnswerProblem(file=path.name, line=None, message=note) for note in nb.notes]
+        return out
+    return finish_notebook
 
 
 def _load_toml(path: Path, problem: Problem, names: dict[str, str]) -> LoadedAnswer:
@@ -198,6 +232,10 @@ def bound_names(path: Path) -> list[str]:
         text = path.read_text(encoding="utf-8", errors="replace")
         if path.suffix == ".toml":
             return list(tomllib.loads(text))
+        if path.suffix == ".ipynb":
+            from lagrade.answer.reading.notebook import notebook_source
+
+            text = notebook_source(text).source
         tree = ast.parse(text)
     except (OSError, ValueError, SyntaxError):
         return []

@@ -27,7 +27,8 @@ import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path
 
-ANSWER_SUFFIXES = (".py", ".toml")
+from lagrade.answer.reading.suffixes import ANSWER_SUFFIXES
+
 #: copies and resubmissions: "12.22 (1)", "12.22(2)", "12.22-1" (Canvas), "12.22 copy"
 _COPY = re.compile(r"(\s*\(\d+\)|-\d+|\s+copy)$", re.IGNORECASE)
 #: a student folder keeps letters of any script (``Jan_Novák``), digits and ``._@+-``; the rest is ``_``
@@ -82,10 +83,13 @@ def _regular(path: Path) -> bool:
 
 
 def choose(files: list[Path], ids: list[str], shown=lambda p: p.name) -> Found:
-    """Per problem, the best file among ``files`` (exact name first, then the shallowest, then by name)."""
+    """Per problem, the best file among ``files`` (exact name first, then the shallowest, then by name). A
+    notebook's checkpoint copy (``.ipynb_checkpoints/``, Jupyter's autosave) is never chosen."""
     out = Found()
     matched: dict[str, list[tuple[bool, Path]]] = {}
     for f in files:
+        if ".ipynb_checkpoints" in f.parts:
+            continue
         m = match_name(f.name, ids)
         if m is None:
             if f.suffix.lower() in ANSWER_SUFFIXES:
@@ -100,7 +104,7 @@ def choose(files: list[Path], ids: list[str], shown=lambda p: p.name) -> Found:
         exact, best = ranked[0]
         out.chosen[pid] = best
         if not exact:
-            out.notes.append(f"{shown(best)} was graded as problem {pid} (the expected name is {pid}.py or {pid}.toml)")
+            out.notes.append(f"{shown(best)} was graded as problem {pid} (the expected name is {pid}.py, {pid}.toml or {pid}.ipynb)")
         if len(ranked) > 1:
             out.notes.append(f"several files for problem {pid}: graded {shown(best)}; not graded: "
                              + ", ".join(shown(f) for _, f in ranked[1:]))

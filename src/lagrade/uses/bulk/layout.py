@@ -1,8 +1,9 @@
-"""Finding the submissions in a class folder: ``<root>/<student>/<problem-id>.py`` (or ``.toml``).
+"""Finding the submissions in a class folder: ``<root>/<student>/<problem-id>.py`` (or ``.toml``, or
+``.ipynb``: a Jupyter notebook's code cells).
 
 Everything else is *skipped*, with the reason, so that an instructor sees what was not graded:
 loose files at the top, nested folders, other extensions, files for problems the assignment does
-not list, a ``.py`` and a ``.toml`` for the same problem, symbolic links (they could point at the
+not list, two answer files (``.py``, ``.toml``, ``.ipynb``) for the same problem, symbolic links (they could point at the
 reference solutions or anywhere else on the grading machine), hidden files, unreadable files.
 """
 
@@ -15,7 +16,18 @@ import stat
 from dataclasses import dataclass
 from pathlib import Path
 
+from lagrade.answer.reading.suffixes import ANSWER_SUFFIXES
+
 MAX_FILE_BYTES = 1_000_000  # the engine refuses far smaller answer files; this only bounds reading
+
+
+def max_file_bytes(suffix: str) -> int:
+    """The bound on reading one answer file: a notebook holds its outputs (pictures) besides its code."""
+    from lagrade.answer.reading.notebook import MAX_NOTEBOOK_BYTES
+
+    return MAX_NOTEBOOK_BYTES if suffix == ".ipynb" else MAX_FILE_BYTES
+
+
 _STUDENT = re.compile(r"^[^\x00-\x1f/\\]{1,200}$")
 
 
@@ -99,25 +111,25 @@ def scan(root: Path, problem_ids: list[str]) -> Layout:
                 skip(f, "not a regular file")
             elif f.name.startswith("."):
                 skip(f, "a hidden file")
-            elif f.suffix not in (".py", ".toml"):
-                skip(f, f"not an answer file (expected <problem-id>.py or <problem-id>.toml, got '{f.suffix or f.name}')"
+            elif f.suffix not in ANSWER_SUFFIXES:
+                skip(f, f"not an answer file (expected <problem-id>.py, .toml or .ipynb, got '{f.suffix or f.name}')"
                      + _near_miss(f.name, problem_ids))
             elif f.stem not in wanted:
                 skip(f, f"problem '{f.stem}' is not in the assignment" + _near_miss(f.name, problem_ids))
-            elif fst.st_size > MAX_FILE_BYTES:
-                skip(f, f"larger than {MAX_FILE_BYTES // 1000} kB")
+            elif fst.st_size > max_file_bytes(f.suffix):
+                skip(f, f"larger than {max_file_bytes(f.suffix) // 1000} kB")
             else:
                 found.setdefault(f.stem, []).append(f)
         for pid, files in sorted(found.items()):
             if len(files) > 1:
                 for f in files:
-                    skip(f, f"both {pid}.py and {pid}.toml were handed in; keep one")
+                    skip(f, f"{' and '.join(g.name for g in files)} were handed in for problem {pid}; keep one")
                 continue
             f = files[0]
             try:
                 fd = os.open(f, os.O_RDONLY | os.O_NOFOLLOW)
                 with os.fdopen(fd, "rb") as fh:
-                    data = fh.read(MAX_FILE_BYTES + 1)
+                    data = fh.read(max_file_bytes(f.suffix) + 1)
             except OSError as exc:
                 skip(f, f"cannot be read ({exc.strerror or exc})")
                 continue

@@ -99,7 +99,7 @@ def _text_answers_last(sub: Submission) -> bool:
     tens of milliseconds. When the queue runs dry, every grader but the one with the last file waits
     for it: ending on short files keeps that wait short (a class of 12.14 whose last Python answers
     solve for the normal modes, 0.4 s each, spent that long with one core idle)."""
-    return sub.suffix != ".py"
+    return sub.suffix not in (".py", ".ipynb")
 
 
 def problem_totals(p: Plan) -> dict[str, float]:

@@ -31,6 +31,8 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
+from lagrade.answer.reading.suffixes import ANSWER_SUFFIXES
+
 #: PrairieLearn's limit on results.json is 1 MB: a plot larger than this is left out (and said)
 MAX_IMAGE_BYTES = 600_000
 ENTRYPOINT = "/usr/local/bin/lagrade-pl-grade"
@@ -57,7 +59,7 @@ class JobParams(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     problem: str = Field(min_length=1, max_length=100)
-    file: str = Field("answer.py", pattern=r"^[A-Za-z0-9_.-]{1,100}\.(py|toml)$")
+    file: str = Field("answer.py", pattern=r"^[A-Za-z0-9_.-]{1,100}\.(py|toml|ipynb)$")
     accuracy: Literal["fast", "default", "strict"] = "default"
 
 
@@ -78,7 +80,7 @@ def read_job(root: Path) -> tuple[JobParams, Path] | dict:
     student = root / "student"
     path = student / params.file
     if not path.is_file() or path.is_symlink():
-        found = sorted(p.name for p in student.glob("*") if p.suffix in (".py", ".toml") and p.is_file()
+        found = sorted(p.name for p in student.glob("*") if p.suffix in ANSWER_SUFFIXES and p.is_file()
                        and not p.is_symlink()) if student.is_dir() else []
         if len(found) != 1:
             return _not_gradable([f"no file {params.file} was submitted"], f"Submit your answer as {params.file}.")

@@ -22,8 +22,7 @@ from pathlib import Path
 
 import sympy as sp
 
-import lagrade
-from lagrade.verdicts.grade import references
+from lagrade.verdicts.grade import check, references
 from lagrade.problem.library import load_problem
 
 #: down to 1e-6: a finer exact fraction (1 + 1/10**7) has a denominator above 10**6 and is refused by the
@@ -65,7 +64,7 @@ def rejected(pid: str, name: str, rows, single: bool, param, eps: float, accurac
     scaled = [r.xreplace({param: factor * param}) for r in rows]
     path = folder / "answer.toml"
     _write(path, name, scaled, single)
-    result = lagrade.check(pid, path, accuracy=accuracy)
+    result = check(pid, path, accuracy=accuracy)  # the engine's entry: not the package's, which reaches the server client
     part = next(p for p in result.parts if p.part == name)
     LAST["evidence"] = evidence(part)
     return part.verdict != "correct"

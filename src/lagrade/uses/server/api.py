@@ -11,6 +11,7 @@ from fastapi import Path as PathParameter
 from fastapi.responses import JSONResponse, Response
 from pydantic import ValidationError
 
+from lagrade.answer.reading.suffixes import ANSWER_SUFFIXES
 from lagrade.uses.server.answers import (
     AnswerIn,
     AnswerTextError,
@@ -109,9 +110,9 @@ async def read_answer(request: Request) -> tuple[str, bytes]:
         if upload is None or isinstance(upload, str):
             raise HTTPException(422, "no file; expected a multipart field 'file' holding answer.py or answer.toml")
         suffix = Path(upload.filename or "").suffix
-        if suffix not in (".py", ".toml"):
-            raise HTTPException(422, f"{upload.filename!r} is neither a .py nor a .toml file; expected answer.py "
-                                     "or answer.toml")
+        if suffix not in ANSWER_SUFFIXES:
+            raise HTTPException(422, f"{upload.filename!r} is neither a .py, a .toml nor a .ipynb file; expected "
+                                     "answer.py, answer.toml or answer.ipynb")
         return suffix, await upload.read()
     if not kind.startswith("application/json"):
         raise HTTPException(415, "expected a JSON body {\"answer\": {...}} or a multipart upload of answer.py/answer.toml")

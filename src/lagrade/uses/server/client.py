@@ -56,21 +56,26 @@ def _request(url: str, token: str | None, data: bytes | None = None, kind: str |
         raise ClientError(f"{url} did not answer JSON; is --server a lagrade server?") from None
 
 
-def remote_check(server: str, token: str | None, problem_id: str, answer: Path) -> dict:
-    """Send ``answer`` for grading; the server's JSON (``lagrade check --json`` plus ``submission_id``)."""
-    if answer.suffix not in (".py", ".toml"):
-        raise ClientError(f"{answer}: an answer file must be a .py or a .toml file")
+def remote_check(server: str, token: str | None, problem_id: str, answer: Path, plot: bool = False) -> dict:
+    """Send ``answer`` for grading; the server's JSON (``lagrade check --json`` plus ``submission_id``).
+    ``plot``: ask for the picture of a wrong motion too (the course's feedback level may refuse it)."""
+    from lagrade.answer.reading.suffixes import ANSWER_KINDS, ANSWER_SUFFIXES
+
+    if answer.suffix not in ANSWER_SUFFIXES:
+        raise ClientError(f"{answer}: {ANSWER_KINDS}")
     try:
         data = answer.read_bytes()
     except OSError as exc:
         raise ClientError(f"{answer}: {exc.strerror or 'cannot be read'}") from None
+    if answer.suffix == ".ipynb":
+        data = without_outputs(data)
     base = server.rstrip("/")
     if not base.startswith(("http://", "https://")):
         raise ClientError(f"--server {server!r}: expected a URL such as http://127.0.0.1:8000")
     boundary = uuid.uuid4().hex
     body = (f"--{boundary}\r\nContent-Disposition: form-data; name=\"file\"; filename=\"answer{answer.suffix}\"\r\n"
             f"Content-Type: application/octet-stream\r\n\r\n").encode() + data + f"\r\n--{boundary}--\r\n".encode()
-    url = f"{base}/api/v1/problems/{urllib.parse.quote(problem_id, safe='')}/check"
+    url = f"{base}/api/v1/problems/{urllib.parse.quote(problem_id, safe='')}/check" + ("?plot=true" if plot else "")
     try:
         status, out = _request(url, token, body, f"multipart/form-data; boundary={boundary}")
     except _CutOff as exc:
@@ -86,6 +91,20 @@ def remote_check(server: str, token: str | None, problem_id: str, answer: Path) 
     if status == 202:
         raise ClientError(f"submission {out.get('submission_id')} is stored but not graded yet; ask again later")
     return out
+
+
+def without_outputs(data: bytes) -> bytes:
+    """A notebook as the server reads it: its outputs (pictures, printed text) are never graded, and
+    would count against the server's bound on an upload. Not a notebook: sent as it is, and the
+    server says what is wrong with it."""
+    try:
+        nb = json.loads(data)
+        for cell in nb["cells"]:
+            if isinstance(cell, dict) and cell.get("cell_type") == "code":
+                cell["outputs"], cell["execution_count"] = [], None
+    except (ValueError, TypeError, KeyError, RecursionError):
+        return data
+    return json.dumps(nb, indent=1).encode("utf-8")
 
 
 def _base(server: str) -> str:
@@ -124,6 +143,55 @@ def _stored(base: str, token: str | None, problem_id: str, sha256: str) -> int |
     except ClientError:
         return None
     return next((a["submission_id"] for a in attempts or [] if a.get("file_hash") == sha256), None)
+
+
+def remote_plot(server: str, token: str | None, address: str) -> bytes | None:
+    """The picture the server drew for an attempt (``plot`` in its result: a path on the server), or
+    None when it has none to give (it may not show pictures at this course's feedback level)."""
+    url = urllib.parse.urljoin(_base(server) + "/", address.lstrip("/"))
+    if not url.startswith(_base(server) + "/"):  # only ever from the server that graded
+        return None
+    headers = {"User-Agent": "lagrade-check", **({"Authorization": f"Bearer {token}"} if token else {})}
+    try:
+        with urllib.request.urlopen(urllib.request.Request(url, headers=headers), timeout=60) as resp:
+            return resp.read() if resp.headers.get_content_type() == "image/png" else None
+    except (urllib.error.URLError, OSError):
+        return None
+
+
+def parts_source(parts: dict) -> str:
+    """Parts given as sympy objects, as the text of an ``answer.py`` that binds exactly them (sympy's
+    ``srepr``: every symbol with its name and assumptions), for the server to grade in its jail."""
+    import sympy
+
+    lines = ['"""Parts given to lagrade.check, as sympy built them."""', "", "from sympy import *", ""]
+    for name, value in parts.items():
+        if not name.isidentifier():
+            raise ClientError(f"{name!r} is not a part name")
+        lines.append(f"{name} = {sympy.srepr(value)}")
+    return "\n".join(lines) + "\n"
+
+
+def check_remote(server: str, token: str | None, problem_id: str, answer: Path | str | None, parts: dict,
+                 plot: bool = True):
+    """``lagrade.check(..., server=, token=)``: the answer file, or the parts given, graded by the course
+    server at the course's feedback level; the result a local check returns, with the server's picture
+    of a wrong motion when it gives one. :class:`ClientError` with one line when it cannot be had."""
+    import tempfile
+
+    if (answer is None) == (not parts):
+        raise ClientError("give an answer file or parts (L=..., eom=...), not both" if parts
+                          else "give an answer file or parts (L=..., eom=...)")
+    with tempfile.TemporaryDirectory(prefix="lagrade-parts-") as tmp:
+        if answer is None:
+            answer = Path(tmp) / "answer.py"
+            answer.write_text(parts_source(parts), encoding="utf-8")
+        out = remote_check(server, token, problem_id, Path(answer), plot=plot)
+    result = result_of(out)
+    address = out.get("plot")
+    if plot and isinstance(address, str):
+        result._picture = lambda: remote_plot(server, token, address)
+    return result
 
 
 def result_of(out: dict):

@@ -16,6 +16,7 @@ from fastapi import APIRouter, HTTPException, Query, Request
 from fastapi.responses import HTMLResponse, RedirectResponse, Response
 from fastapi.templating import Jinja2Templates
 
+from lagrade.answer.reading.suffixes import ANSWER_SUFFIXES
 from lagrade.uses.server.answers import AnswerTextError, to_toml
 from lagrade.uses.server.api import MAX_ID, submit
 from lagrade.uses.server.state import SESSION_COOKIE, SESSION_SECONDS, TEMPLATES, Who
@@ -259,8 +260,8 @@ async def problem_check(pid: str, request: Request):
     values: dict = {}
     if upload is not None and not isinstance(upload, str) and upload.filename:
         suffix = Path(upload.filename).suffix
-        if suffix not in (".py", ".toml"):
-            ctx["error"] = f"{upload.filename!r} is neither answer.py nor answer.toml"
+        if suffix not in ANSWER_SUFFIXES:
+            ctx["error"] = f"{upload.filename!r} is neither answer.py, answer.toml nor answer.ipynb"
             return _page(request, "problem.html", ctx, status=422)
         data = await upload.read()
     else:
