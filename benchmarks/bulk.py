@@ -256,6 +256,8 @@ def main() -> None:
                     help="no two Python answers share a value (see make_distinct); the baseline then checks "
                          "every file once")
     ap.add_argument("--plots", action="store_true", help="lagrade grade --plots: also draw the wrong motions")
+    ap.add_argument("--no-plots", action="store_true", help="lagrade grade --no-plots (an older lagrade drew them "
+                                                             "by default)")
     args = ap.parse_args()
     ctypes.CDLL(None).prctl(36, 1, 0, 0, 0)  # PR_SET_CHILD_SUBREAPER: what a process leaves behind is counted
     script = Path(sys.executable).with_name("lagrade")
@@ -291,7 +293,7 @@ def main() -> None:
         for i in range(args.repeats):
             db = tmp / f"pool{i}.sqlite"
             seconds, _, cpu = run_grade(lagrade, root, hw, db, args.workers, memory=False,
-                                        extra=["--plots"] if args.plots else [])
+                                        extra=["--plots"] if args.plots else ["--no-plots"] if args.no_plots else [])
             wrong = check_grades(db, expected, args.problem)
             check, check_cpu = {}, {}
             for key, (f, _) in copies.items():

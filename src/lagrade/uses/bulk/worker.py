@@ -92,9 +92,13 @@ class Grader:
                 loaded = load_answer(path, problem, SandboxLimits(cpu_seconds=limits["cpu_seconds"],
                                                                    wall_seconds=limits["wall_seconds"],
                                                                    memory_mb=limits["memory_mb"]))
+                # the gradebook keeps its own text and MathML; the server's answer also says how each value
+                # was read (`check --json`'s read_as), printed here from the value rather than read back
+                # from its text in the web process, which served every submission alone (about 12 ms a part)
+                echo = ("latex", "unicode") if job.get("read_back") else ()
                 result = grade_values(problem, loaded, job["accuracy"], hints=bool(job.get("hints")),
                                       credit=Credit.model_validate(job["credit"]) if job.get("credit") else None,
-                                      read_as=(), memo=self.memo)  # the gradebook keeps its own text and MathML
+                                      read_as=echo, memo=self.memo)
                 parts = []
                 for p in result.parts:
                     row = p.model_dump(exclude={"read_as"})
@@ -102,6 +106,8 @@ class Grader:
                     row["certificate"] = p.certificate  # the proof of a rejection: the gradebook's, never shown
                     if p.part in loaded.values:
                         row["answer_text"], row["answer_mathml"] = show(loaded.values[p.part])
+                        if echo:
+                            row["read_back"] = [p.read_as, p.read_as_text]
                     parts.append(row)
                 # the server's page shows `check --plot`'s picture: made here, where the student's equations are
                 picture = None

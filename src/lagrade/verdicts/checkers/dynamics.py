@@ -605,7 +605,10 @@ def _singular_factor(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -> str 
             suspects = [f for f in mine if not (f.is_positive or f.is_negative) and exact.vanishes_in_domain(f, ctx.domain(mech))]
             if not suspects:
                 return None
-            own = [f for r in mech.EL for part in _row_factors(r, mech.s.qdd, ctx.domain(mech)) for f in part]
+            own = mech.linearized.get(("row factors",), (None,))[0]  # the scene's own: once per problem
+            if own is None:
+                own = [f for r in mech.EL for part in _row_factors(r, mech.s.qdd, ctx.domain(mech)) for f in part]
+                mech.linearized[("row factors",)] = (own,)
             for f in suspects:
                 if not any(exact.proportional(f, g, ctx.domain(mech), ctx.symbolic_seconds) for g in own):
                     return sp.sstr(f)
