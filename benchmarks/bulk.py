@@ -256,12 +256,17 @@ def main() -> None:
                     help="no two Python answers share a value (see make_distinct); the baseline then checks "
                          "every file once")
     ap.add_argument("--plots", action="store_true", help="lagrade grade --plots: also draw the wrong motions")
+    ap.add_argument("--lagrade-src", type=Path, help="grade and check with another checkout's sources (its src/ "
+                                                      "folder, as PYTHONPATH of `python -m lagrade`): an older commit")
     ap.add_argument("--no-plots", action="store_true", help="lagrade grade --no-plots (an older lagrade drew them "
                                                              "by default)")
     args = ap.parse_args()
     ctypes.CDLL(None).prctl(36, 1, 0, 0, 0)  # PR_SET_CHILD_SUBREAPER: what a process leaves behind is counted
     script = Path(sys.executable).with_name("lagrade")
     lagrade = [str(script)] if script.exists() else [sys.executable, "-m", "lagrade"]
+    if args.lagrade_src is not None:  # the subprocesses' lagrade: this process generates the class with its own
+        lagrade = [sys.executable, "-m", "lagrade"]
+        os.environ["PYTHONPATH"] = str(args.lagrade_src.resolve())
     subprocess.run([*lagrade, "cache", "build", args.problem], stdout=subprocess.DEVNULL, check=True)
     tmp = Path(tempfile.mkdtemp(prefix="lagrade-bench-"))
     try:

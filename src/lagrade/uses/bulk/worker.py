@@ -130,7 +130,6 @@ class Grader:
             "jail": self.jail, **({"plot_png": picture} if picture else {}),
         }
 
-
     def _picture(self, job: dict[str, Any], result, again: Callable[[], Any]) -> bytes | None:
         """The picture of a wrong answer's motions, drawn once per distinct file: a class hands in the
         same bytes again and again (the picture is a function of the file, the problem and the
