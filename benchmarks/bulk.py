@@ -27,6 +27,7 @@ built first with ``lagrade cache build`` (what an instructor runs once).
 from __future__ import annotations
 
 import argparse
+import ctypes
 import hashlib
 import os
 import resource
@@ -69,27 +70,35 @@ def make_distinct(root: Path, problem: str) -> int:
     often than in a real class. L gets a total time derivative d/dt(c P q) and every equation of
     motion is multiplied by c, with c = k/(k+1) unique per file: the grades stay the same. Returns
     the number of files changed."""
-    import re
-
     from lagrade.problem.library import load_problem
 
     spec = load_problem(problem)
-    system = spec.systems[0]
-    q, par = system.coordinates[0].name, spec.parameters_of(system.key)[0].name
     changed = 0
     for k, f in enumerate(sorted(root.rglob("*.py")), start=2):
         src = f.read_text(encoding="utf-8", errors="replace")
-        lines = ["", "import sympy as spx", f"c_ = spx.Rational({k}, {k + 1})"]
-        if re.search(r"^L\s*=", src, re.M):
-            lines.append(f"L = L + c_ * spx.Symbol('{par}') * spx.Function('{q}')(spx.Symbol('t')).diff(spx.Symbol('t'))")
-        for part in spec.parts:
-            if part.kind == "eom" and re.search(rf"^{part.name}\s*=", src, re.M):
-                lines.append(f"{part.name} = [spx.Eq(r.lhs * c_, r.rhs * c_) if isinstance(r, spx.Equality) "
-                             f"else c_ * r for r in {part.name}]")
-        if len(lines) > 3:
-            f.write_text(src + "\n".join(lines) + "\n", encoding="utf-8")
+        out = distinct_source(src, spec, k)
+        if out != src:
+            f.write_text(out, encoding="utf-8")
             changed += 1
     return changed
+
+
+def distinct_source(src: str, spec, k: int) -> str:
+    """An answer.py's text with values of its own and the same grades (``k`` >= 2 makes it unique):
+    L + d/dt(c P q) and every equation of motion times c, c = k/(k+1). Unchanged when it binds
+    neither."""
+    import re
+
+    system = spec.systems[0]
+    q, par = system.coordinates[0].name, spec.parameters_of(system.key)[0].name
+    lines = ["", "import sympy as spx", f"c_ = spx.Rational({k}, {k + 1})"]
+    if re.search(r"^L\s*=", src, re.M):
+        lines.append(f"L = L + c_ * spx.Symbol('{par}') * spx.Function('{q}')(spx.Symbol('t')).diff(spx.Symbol('t'))")
+    for part in spec.parts:
+        if part.kind == "eom" and re.search(rf"^{part.name}\s*=", src, re.M):
+            lines.append(f"{part.name} = [spx.Eq(r.lhs * c_, r.rhs * c_) if isinstance(r, spx.Equality) "
+                         f"else c_ * r for r in {part.name}]")
+    return src + "\n".join(lines) + "\n" if len(lines) > 3 else src
 
 
 def _pss(pid: int) -> int:
@@ -126,6 +135,14 @@ def _tree_rss(root_pid: int) -> int:
     return total
 
 
+def _reap() -> None:
+    while True:
+        try:
+            os.wait()
+        except ChildProcessError:
+            return
+
+
 def _children_cpu() -> float:
     usage = resource.getrusage(resource.RUSAGE_CHILDREN)
     return usage.ru_utime + usage.ru_stime
@@ -156,6 +173,7 @@ def run_grade(lagrade: list[str], root: Path, hw: Path, db: Path, workers: int,
     sampler = threading.Thread(target=sample, daemon=True)
     sampler.start()
     _, err = proc.communicate()
+    _reap()  # anything it left behind (a zygote): counted once reaped
     seconds = time.perf_counter() - start
     done.set()
     sampler.join()
@@ -237,9 +255,18 @@ def main() -> None:
     ap.add_argument("--distinct", action="store_true",
                     help="no two Python answers share a value (see make_distinct); the baseline then checks "
                          "every file once")
+    ap.add_argument("--plots", action="store_true", help="lagrade grade --plots: also draw the wrong motions")
+    ap.add_argument("--lagrade-src", type=Path, help="grade and check with another checkout's sources (its src/ "
+                                                      "folder, as PYTHONPATH of `python -m lagrade`): an older commit")
+    ap.add_argument("--no-plots", action="store_true", help="lagrade grade --no-plots (an older lagrade drew them "
+                                                             "by default)")
     args = ap.parse_args()
+    ctypes.CDLL(None).prctl(36, 1, 0, 0, 0)  # PR_SET_CHILD_SUBREAPER: what a process leaves behind is counted
     script = Path(sys.executable).with_name("lagrade")
     lagrade = [str(script)] if script.exists() else [sys.executable, "-m", "lagrade"]
+    if args.lagrade_src is not None:  # the subprocesses' lagrade: this process generates the class with its own
+        lagrade = [sys.executable, "-m", "lagrade"]
+        os.environ["PYTHONPATH"] = str(args.lagrade_src.resolve())
     subprocess.run([*lagrade, "cache", "build", args.problem], stdout=subprocess.DEVNULL, check=True)
     tmp = Path(tempfile.mkdtemp(prefix="lagrade-bench-"))
     try:
@@ -267,30 +294,37 @@ def main() -> None:
         copies: dict[str, list] = {}
         for f in files:
             copies.setdefault(hashlib.sha256(f.read_bytes()).hexdigest(), [f, 0])[1] += 1
-        times, cpus, bases, ratios = [], [], [], []
+        times, cpus, bases, ratios, cpu_ratios = [], [], [], [], []
         for i in range(args.repeats):
             db = tmp / f"pool{i}.sqlite"
-            seconds, _, cpu = run_grade(lagrade, root, hw, db, args.workers, memory=False)
+            seconds, _, cpu = run_grade(lagrade, root, hw, db, args.workers, memory=False,
+                                        extra=["--plots"] if args.plots else ["--no-plots"] if args.no_plots else [])
             wrong = check_grades(db, expected, args.problem)
-            check = {}
+            check, check_cpu = {}, {}
             for key, (f, _) in copies.items():
-                t = time.perf_counter()
+                t, c = time.perf_counter(), _children_cpu()
                 subprocess.run([*lagrade, "check", f.stem, str(f), "--json"], capture_output=True, check=False)
-                check[key] = time.perf_counter() - t
+                _reap()  # the check's zygote, left to this subreaper: its CPU counts
+                check[key], check_cpu[key] = time.perf_counter() - t, _children_cpu() - c
             base = sum(check[key] * k for key, (_, k) in copies.items()) / n
+            base_cpu = sum(check_cpu[key] * k for key, (_, k) in copies.items()) / n
             times.append(seconds)
             cpus.append(cpu)
             bases.append(base)
             ratios.append(base * n / seconds)
+            cpu_ratios.append(base_cpu * n / cpu)
             print(f"  lagrade grade: {n} in {seconds:.1f} s ({cpu:.1f} s of CPU), {wrong} graded unexpectedly; "
-                  f"one check per file: {base:.2f} s (the {len(copies)} distinct files); ratio {ratios[-1]:.1f}x",
-                  flush=True)
+                  f"one check per file: {base:.2f} s, {base_cpu:.2f} s of CPU (the {len(copies)} distinct files); "
+                  f"ratio {ratios[-1]:.1f}x, of CPU {cpu_ratios[-1]:.1f}x", flush=True)
         pool, cpu, base = statistics.median(times), statistics.median(cpus), statistics.median(bases)
         print(f"lagrade grade (median of {args.repeats}): {pool:.1f} s = {n / pool * 60:.0f} per minute "
               f"(target: under 60 s)")
         print(f"one `lagrade check` per file: {base:.2f} s (median)")
         print(f"ratio: lagrade grade is {statistics.median(ratios):.1f}x the throughput of one check per file "
-              f"(median of the repeats' ratios; target >= 20x)")
+              f"(median of the repeats' ratios; target >= 20x); of CPU: {statistics.median(cpu_ratios):.1f}x (the "
+              f"class's CPU against a check's all processes per file: the ratio an idle machine's cores would give)")
+        print(f"CPU of lagrade grade (median): {cpu:.1f} s, {cpu / (os.cpu_count() or 1):.1f} s on "
+              f"{os.cpu_count()} idle cores at best (target: under 8 s)")
         seconds, peak, _ = run_grade(lagrade, root, hw, tmp / "memory.sqlite", args.workers)
         print(f"  peak memory (PSS, a run of its own sampled every 20 ms): {peak / 2**20:.0f} MiB "
               f"(that run: {seconds:.1f} s)")

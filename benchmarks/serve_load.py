@@ -5,6 +5,7 @@
     python benchmarks/serve_load.py --hostile 0           # no hostile answer (the ordinary p95 to compare with)
     python benchmarks/serve_load.py --mix light           # hostile answers that cost nothing (the jail refuses them)
     python benchmarks/serve_load.py --probe-only          # the head-of-line probe alone
+    python benchmarks/serve_load.py --spread 0 --distinct # a real burst: 200 answers at once, no two values alike
 
 Starts ``lagrade serve`` (a fresh database in a temporary folder, tokens required), issues a token
 per student, and has each student submit one 12.14 answer by upload: right (the reference solution,
@@ -81,11 +82,26 @@ def answers(mix: str = "costly") -> dict[str, list[tuple[str, bytes]]]:
     return {"right": right, "wrong": wrong, "broken": broken, "hostile": costly.get(mix, hostile)}
 
 
-def pick(rng: random.Random, pool: dict, i: int, hostile: float) -> tuple[str, str, bytes]:
+def pick(rng: random.Random, pool: dict, i: int, hostile: float, distinct=None) -> tuple[str, str, bytes]:
+    """A student's answer. ``distinct`` (the problem, :func:`distinct_answers`): every right or wrong
+    answer.py gets values of its own (benchmarks/bulk.py's rewrite, with the same grade), so that no
+    grader memo or content cache serves one student's values to another, as in a real class."""
     kind = rng.choices(["right", "wrong", "broken", "hostile"], weights=[40, 30, 15, hostile])[0]
     name, data = rng.choice(pool[kind])
+    if distinct is not None and kind in ("right", "wrong") and name.endswith(".py"):
+        from bulk import distinct_source
+
+        data = distinct_source(data.decode("utf-8", "replace"), distinct, i + 2).encode()
     # each student's own file (a comment, in .py and .toml alike): no two attempts share their content
     return kind, name, data + f"\n# student {i}\n".encode()
+
+
+def distinct_answers():
+    """The problem the answers are to, for :func:`pick`'s ``distinct``."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from lagrade.problem.library import load_problem
+
+    return load_problem("12.14")
 
 
 def cpu_seconds(root: int) -> tuple[float, float]:
@@ -178,10 +194,11 @@ async def student(client, base, token, kind, name, data, start_at, t0, deadline,
 
 
 async def run(base: str, tokens: list[str], spread: float, deadline: float, seed: int, mix: str,
-              hostile: float) -> list[dict]:
+              hostile: float, distinct: bool = False) -> list[dict]:
     rng = random.Random(seed)
     pool = answers(mix)
-    jobs = [(tokens[i], *pick(rng, pool, i, hostile), rng.uniform(0, spread)) for i in range(len(tokens))]
+    problem = distinct_answers() if distinct else None
+    jobs = [(tokens[i], *pick(rng, pool, i, hostile, problem), rng.uniform(0, spread)) for i in range(len(tokens))]
     out: list[dict] = []
     limits = httpx.Limits(max_connections=len(tokens), max_keepalive_connections=len(tokens))
     async def progress():
@@ -231,6 +248,8 @@ def main() -> None:
                     help="what the hostile answers are (bounded: the costly ones but the power bombs)")
     ap.add_argument("--hostile", type=float, default=15.0, help="share of hostile answers, in %% (right 40, wrong 30, "
                                                                   "broken 15)")
+    ap.add_argument("--distinct", action="store_true", help="every right or wrong answer.py with values of its own "
+                                                              "(a real class's burst: no two students send one value)")
     ap.add_argument("--no-probe", action="store_true", help="skip the head-of-line probe")
     ap.add_argument("--probe-only", action="store_true", help="only the head-of-line probe")
     args = ap.parse_args()
@@ -288,7 +307,8 @@ def measure(args, work: Path) -> None:
         cpu0 = cpu_seconds(server.pid)
         t0 = time.monotonic()
         say(f"{len(tokens)} students submit, arriving over {args.spread:g} s")
-        results = asyncio.run(run(base, tokens, args.spread, args.deadline, args.seed, args.mix, args.hostile)) \
+        results = asyncio.run(run(base, tokens, args.spread, args.deadline, args.seed, args.mix, args.hostile,
+                                  args.distinct)) \
             if tokens else []
         wall = time.monotonic() - t0
         cpu1 = cpu_seconds(server.pid)
@@ -327,6 +347,9 @@ def measure(args, work: Path) -> None:
     print(f"  CPU during the run: server process {cpu1[0] - cpu0[0]:.1f} s ({(cpu1[0] - cpu0[0]) / n * 1e3:.0f} ms a "
           f"submission), graders and answers {cpu1[1] - cpu0[1]:.1f} s ({(cpu1[1] - cpu0[1]) / n * 1e3:.0f} ms a "
           f"submission), on {os.cpu_count()} cores in {wall:.1f} s")
+    burst = ((cpu1[0] - cpu0[0]) + (cpu1[1] - cpu0[1])) / (os.cpu_count() or 1)
+    print(f"  the run's CPU spread over {os.cpu_count()} idle cores: {burst:.1f} s (what the burst's last grade would "
+          f"wait for on an idle machine at best; on a loaded one the wall times above include the other load)")
     print(f"  errors {len(errors)}, lost {lost}, graded twice {twice}")
     if probed is not None:
         print(f"  head-of-line probe: the right answer behind another student's ten infinite loops "

@@ -61,7 +61,7 @@ def main() -> None:
         rng, pool = random.Random(args.seed), answers()
         times: dict[str, dict[str, list[float]]] = {}
         for i in range(args.answers):
-            kind, name, data = pick(rng, pool, i)
+            kind, name, data = pick(rng, pool, i, 15.0)
             suffix = Path(name).suffix
             row = times.setdefault(kind, {s: [] for s in STAGES})
             t0 = time.perf_counter()

@@ -48,7 +48,7 @@ def graded(tmp_path_factory):
     hw.write_text('name = "hw7"\ntitle = "Homework 7"\n[[problems]]\nid = "12.43"\nweight = 6\n'
                   '[[problems]]\nid = "12.3"\nparts = { L = 1, eom = 3 }\n')
     db = tmp / "hw.sqlite"
-    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "2"])
+    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "2", "--plots"])
     assert res.exit_code == 0, res.output
     # by construction: ada full (6 + 2); bob 12.43: H 0, hamilton 1/2, eom 0 -> 6 * 0.5/3 = 1,
     # bob 12.3: L 1, eom 1/2 with weights 1:3 -> 2 * (1 + 1.5)/4 = 1.25; cy 12.43: H 0 -> 4, no 12.3
@@ -222,22 +222,29 @@ def test_a_wrong_motion_is_drawn_on_its_students_page(graded, tmp_path):
 
 
 def test_a_wrong_answer_graded_without_its_picture_is_drawn_by_the_next_run(tmp_path):
+    """Pictures are drawn when asked for (``--plots``), not inside every grading: the report says how many
+    wrong files have none and how to draw them; the run that asks grades only those again."""
     root = tmp_path / "submissions"
     (root / "bob").mkdir(parents=True)
     shutil.copyfile(REPO / "tests/answers/12.43/wrong_sign_of_V.py", root / "bob" / "12.43.py")
     hw = tmp_path / "hw.toml"
     hw.write_text('name = "hw"\n[[problems]]\nid = "12.43"\n')
     db = tmp_path / "hw.sqlite"
-    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "1", "--no-plots"])
+    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "1"])  # pictures: not by default
     assert res.exit_code == 0, res.output
     with sqlite3.connect(db) as con:
         assert con.execute("SELECT plot_png FROM submissions").fetchone()[0] is None
-    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "1"])
+    res = CliRunner().invoke(report, [str(db), "--html", str(tmp_path / "report")])
+    assert res.exit_code == 0 and "1 graded file with a part not correct was graded without the pictures" in res.output
+    assert "--plots" in res.output, res.output
+    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "1", "--plots"])
     assert res.exit_code == 0 and "1 graded now" in res.output, res.output
     with sqlite3.connect(db) as con:
         assert con.execute("SELECT plot_png FROM submissions").fetchone()[0][:8] == PNG
-    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "1"])
+    res = CliRunner().invoke(grade, [str(root), "-a", str(hw), "--db", str(db), "-j", "1", "--plots"])
     assert res.exit_code == 0 and "0 graded now" in res.output, res.output
+    res = CliRunner().invoke(report, [str(db), "--html", str(tmp_path / "report")])
+    assert res.exit_code == 0 and "without the pictures" not in res.output, res.output
 
 
 def test_files_that_could_not_be_graded_say_whose(graded, tmp_path):

@@ -243,20 +243,46 @@ def root_between(expr: sp.Expr, x: sp.Symbol, lo: float, hi: float, values: Mapp
                                      f"at the other, finite in between")
 
 
+def pivoted_columns(matrix):
+    """The column order of a QR factorization with column pivoting (Businger and Golub, what LAPACK's
+    ``geqp3`` computes): at each step the column of largest norm in the complement of those chosen. In
+    numpy, for the few rows a minor has here, so that a check does not import ``scipy.linalg`` (about
+    0.3 s, a quarter of a check's own work) for the order alone; the norms are recomputed at each step
+    rather than downdated, which LAPACK does only for speed."""
+    import numpy as np
+
+    a = np.array(matrix, dtype=float, copy=True)
+    m, n = a.shape
+    order = np.arange(n)
+    for j in range(min(m, n)):
+        norms = np.einsum("ij,ij->j", a[j:, j:], a[j:, j:])
+        p = j + int(np.argmax(norms))
+        if p != j:
+            a[:, [j, p]], order[[j, p]] = a[:, [p, j]], order[[p, j]]
+        x = a[j:, j]
+        alpha = np.linalg.norm(x)
+        if alpha == 0.0:
+            break
+        v = x.copy()
+        v[0] += np.copysign(alpha, x[0])
+        v /= np.linalg.norm(v)
+        a[j:, j:] -= 2.0 * np.outer(v, v @ a[j:, j:])
+    return order
+
+
 def outside_span(quantity: str, rows: list[list[sp.Expr]], target: list[sp.Expr], rows_at, target_at,
                  values: Mapping[sp.Symbol, float]) -> Certificate | None:
     """A certificate that the vector ``target`` is not a combination of the vectors ``rows`` (each a list
     of expressions, one per column) at a point: a square minor of the stacked matrix, its columns picked
     where the floating-point values (``rows_at``, ``target_at``) make it largest, is provably nonzero."""
     import numpy as np
-    from scipy.linalg import qr
 
     rows_at = np.asarray(rows_at, dtype=float).reshape(len(rows), -1)
     if not np.all(np.isfinite(rows_at)):
         return None
     rank = np.linalg.matrix_rank(rows_at) if rows_at.size else 0
     if 0 < rank < len(rows):  # dependent vectors (a quantity given twice): keep independent ones
-        _, _, keep = qr(rows_at.T, pivoting=True)
+        keep = pivoted_columns(rows_at.T)
         rows, rows_at = [rows[i] for i in sorted(keep[:rank])], rows_at[sorted(keep[:rank])]
     stacked = np.vstack([rows_at, np.asarray(target_at, dtype=float).reshape(1, -1)])
     if not np.all(np.isfinite(stacked)):
@@ -264,7 +290,7 @@ def outside_span(quantity: str, rows: list[list[sp.Expr]], target: list[sp.Expr]
     size = len(rows) + 1
     if stacked.shape[1] < size:
         return None
-    _, _, pivots = qr(stacked, pivoting=True)
+    pivots = pivoted_columns(stacked)
     cols = sorted(pivots[:size])
     minor = sp.Matrix([[r[c] for c in cols] for r in [*rows, target]]).det(method="berkowitz")
     return certify(quantity, minor, values)

@@ -50,6 +50,7 @@ class Grader:
         # holds what this process is about to load (the problems, their references)
         self.zygote = zygote.start(warm=True, directory=str(self.dir))
         self.memo = VerdictMemo()  # a class hands in the same values again and again
+        self.pictures: dict[bytes, bytes | None] = {}  # a wrong file's picture, by its content (`_picture`)
         (self.dir / "problems").mkdir(mode=0o700, exist_ok=True)  # the folder itself is traversable
         self.problems = {}
         for pid, text in problems.items():
@@ -91,9 +92,13 @@ class Grader:
                 loaded = load_answer(path, problem, SandboxLimits(cpu_seconds=limits["cpu_seconds"],
                                                                    wall_seconds=limits["wall_seconds"],
                                                                    memory_mb=limits["memory_mb"]))
+                # the gradebook keeps its own text and MathML; the server's answer also says how each value
+                # was read (`check --json`'s read_as), printed here from the value rather than read back
+                # from its text in the web process, which served every submission alone (about 12 ms a part)
+                echo = ("latex", "unicode") if job.get("read_back") else ()
                 result = grade_values(problem, loaded, job["accuracy"], hints=bool(job.get("hints")),
                                       credit=Credit.model_validate(job["credit"]) if job.get("credit") else None,
-                                      read_as=(), memo=self.memo)  # the gradebook keeps its own text and MathML
+                                      read_as=echo, memo=self.memo)
                 parts = []
                 for p in result.parts:
                     row = p.model_dump(exclude={"read_as"})
@@ -101,16 +106,15 @@ class Grader:
                     row["certificate"] = p.certificate  # the proof of a rejection: the gradebook's, never shown
                     if p.part in loaded.values:
                         row["answer_text"], row["answer_mathml"] = show(loaded.values[p.part])
+                        if echo:
+                            row["read_back"] = [p.read_as, p.read_as_text]
                     parts.append(row)
                 # the server's page shows `check --plot`'s picture: made here, where the student's equations are
                 picture = None
-                if job.get("plot"):
-                    picture = _picture(result)
-                    if picture is None and any(p.verdict != "correct" for p in result.parts):
-                        # a verdict kept from before carries no motion: grade again, unkept, to draw it
-                        picture = _picture(grade_values(problem, loaded, job["accuracy"], read_as=(),
-                                                        credit=Credit.model_validate(job["credit"])
-                                                        if job.get("credit") else None))
+                if job.get("plot") and any(p.verdict != "correct" for p in result.parts):
+                    picture = self._picture(job, result, lambda: grade_values(
+                        problem, loaded, job["accuracy"], read_as=(),
+                        credit=Credit.model_validate(job["credit"]) if job.get("credit") else None))
         except GradingOutOfTime as exc:  # the file's cost, not the grader's fault: final, never retried
             return failed_result(job, problem_parts(problem), "timeout", str(exc), time.monotonic() - start)
         finally:
@@ -125,6 +129,30 @@ class Grader:
             "problems": result.problems, "parts": parts, "seconds": time.monotonic() - start,
             "jail": self.jail, **({"plot_png": picture} if picture else {}),
         }
+
+    def _picture(self, job: dict[str, Any], result, again: Callable[[], Any]) -> bytes | None:
+        """The picture of a wrong answer's motions, drawn once per distinct file: a class hands in the
+        same bytes again and again (the picture is a function of the file, the problem and the
+        grading settings), and drawing one costs a grading again (a verdict kept by the memo carries
+        no motion) and matplotlib's 0.1-0.4 s."""
+        import hashlib
+
+        key = hashlib.sha256(repr((job["problem"], job["suffix"], job["accuracy"], job.get("credit"),
+                                   job.get("hints"))).encode() + b"\0" + job["data"]).digest()
+        if key in self.pictures:
+            self.pictures[key] = self.pictures.pop(key)  # most recently used last
+            return self.pictures[key]
+        picture = _picture(result)
+        if picture is None:  # a verdict kept from before carries no motion: grade again, unkept, to draw it
+            picture = _picture(again())
+        self.pictures[key] = picture
+        while len(self.pictures) > PICTURES_KEPT:
+            self.pictures.pop(next(iter(self.pictures)))
+        return picture
+
+
+#: distinct files whose pictures a grader keeps (a PNG is 30-80 kB)
+PICTURES_KEPT = 64
 
 
 def _warm_up(problem, memo=None) -> None:

@@ -59,15 +59,20 @@ def check_json(result: dict[str, Any], problem=None) -> dict[str, Any]:
     """A grader's result as ``lagrade check --json`` prints it, plus how each part was read (the
     student's own value, as terminal text and MathML) and how the file ran.
 
-    The graders keep each value as sympy text (the gradebook's); read back here without eval
-    (:func:`lagrade.answer.reading.text.parse_math`), it gives the LaTeX ``read_as`` of ``check --json`` and
-    the terminal text of a local check. A value that does not read back keeps its sympy text."""
+    The server's graders print each value as ``check --json`` and a local check do (the part's
+    ``read_back``: LaTeX and terminal text, made from the value itself, within the grading's CPU
+    bound). A result without it (another grader's) keeps each value as sympy text (the gradebook's):
+    read back here without eval (:func:`lagrade.answer.reading.text.parse_math`), it gives the same;
+    a value that does not read back keeps its sympy text."""
     checked = CheckResult(problem=result["problem"], score=result["score"], max_score=result["max_score"],
                           parts=[PartResult.model_validate(p) for p in result["parts"]],
                           problems=list(result["problems"]))
     shown = {p["part"]: p["answer_text"] for p in result["parts"] if p.get("answer_text")}
+    printed = {p["part"]: p["read_back"] for p in result["parts"] if p.get("read_back")}
     for part in checked.parts:
-        if part.part in shown and problem is not None:
+        if part.part in printed:  # printed by the grader from the value itself (the job's ``read_back``)
+            part.read_as, shown[part.part] = printed[part.part][0], printed[part.part][1] or shown.get(part.part)
+        elif part.part in shown and problem is not None:
             part.read_as, shown[part.part] = _read_back(problem, shown[part.part])
     out = json.loads(checked.model_dump_json())
     out["read_as_text"] = shown
@@ -310,6 +315,7 @@ class GradingQueue:
         job = self.plan.job(sub)
         job["server_id"] = sid
         job["hints"] = self.plan.assignment.rules.feedback == "hints"  # the course's feedback level
+        job["read_back"] = True  # the grader prints each value as read (check_json), not this process
         with self._lock:
             job["plot"] = sid in self._plots
             job["rerun"] = sid in self._rerun

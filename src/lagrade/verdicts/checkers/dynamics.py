@@ -632,7 +632,10 @@ def _singular_factor(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -> str 
             suspects = [f for f in mine if not (f.is_positive or f.is_negative) and exact.vanishes_in_domain(f, ctx.domain(mech))]
             if not suspects:
                 return None
-            own = [f for r in mech.EL for part in _row_factors(r, mech.s.qdd, ctx.domain(mech)) for f in part]
+            own = mech.linearized.get(("row factors",), (None,))[0]  # the scene's own: once per problem
+            if own is None:
+                own = [f for r in mech.EL for part in _row_factors(r, mech.s.qdd, ctx.domain(mech)) for f in part]
+                mech.linearized[("row factors",)] = (own,)
             for f in suspects:
                 if not any(exact.proportional(f, g, ctx.domain(mech), ctx.symbolic_seconds) for g in own):
                     return sp.sstr(f)
@@ -1168,11 +1171,21 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
     def affine(e: sp.Expr) -> list[sp.Expr]:  # [d e/d(state) | e], at equilibrium
         return [*(sp.diff(e, v).xreplace(at) for v in state), e.xreplace(at)]
 
+    if ("affine", key) not in mech.linearized:  # the true rows' [d/d(state) | value]: once per problem
+        mech.linearized[("affine", key)] = ([affine(e) for e in mech.EL], None)
+    true_rows = mech.linearized[("affine", key)][0]
+    theirs: dict[int, list[sp.Expr]] = {}  # the student's rows' (each once, whatever the states)
+
+    def their_row(i: int) -> list[sp.Expr]:
+        if i not in theirs:
+            theirs[i] = affine(rows[i])
+        return theirs[i]
+
     for i in [i for i, ok in enumerate(consistent) if not ok]:
         k = 0
         admit.witness(outside_span(
             f"a minor of the true linearized equations stacked with your equation {i + 1} (zero if yours were "
-            "a combination of them)", [affine(e) for e in mech.EL], affine(rows[i]),
+            "a combination of them)", true_rows, their_row(i),
             [np.append(A_r[j, :, k], g0_r[j, k]) for j in range(n)], np.append(A_s[i, :, k], g0[i, k]),
             {s: v[k] for s, v in pts.values.items()}))
     use = [i for i, ok in enumerate(consistent) if ok and np.abs(A_s[i]).max() > 0]
@@ -1182,12 +1195,11 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
         # Agreement in floating point (1e-7) is checked again exactly: each row's linear part at
         # equilibrium must lie in the span of the true one's at an exact state (a coefficient off by
         # 1e-8 is refuted there, certified).
-        true_rows = [affine(e) for e in mech.EL]
         for k in range(min(EXACT_STATES, pts.K)):
             for i in range(len(rows)):
                 cert = outside_span(
                     f"a minor of the true linearized equations stacked with your equation {i + 1} (zero if yours "
-                    "were a combination of them)", true_rows, affine(rows[i]),
+                    "were a combination of them)", true_rows, their_row(i),
                     [np.append(A_r[j, :, k], g0_r[j, k]) for j in range(n)], np.append(A_s[i, :, k], g0[i, k]),
                     {s: v[k] for s, v in pts.values.items()})
                 if cert is not None:
