@@ -1,0 +1,106 @@
+"""`lagrade validate` (issue 46): a problem file proved before a student sees it.
+
+The small problem files in tests/validate_problems each break one thing a validation must catch:
+a wrong reference (its hand-written solution disagrees), a listed mistake equal to the reference,
+a sampling box outside the physical domain; each fails with a line that says which. A valid file
+passes, through the command's exit code.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+import sympy as sp
+from click.testing import CliRunner
+
+from lagrade.cli import main
+from lagrade.uses.validate.forms import half_angle_safe, right_forms
+from lagrade.uses.validate.proofs import proved_equal
+from lagrade.uses.validate.run import validate
+from lagrade.uses.validate.slips import wrong_answers
+
+HERE = Path(__file__).parent / "validate_problems" / "problems"
+t = sp.Symbol("t")
+theta = sp.Function("theta")(t)
+m, g, l = sp.symbols("m g l")
+
+
+def _failed(report) -> list[str]:
+    return [c.detail for c in report.cases if not c.ok]
+
+
+def test_a_valid_problem_file_passes_with_exit_code_0():
+    result = CliRunner().invoke(main, ["validate", str(HERE / "vp-pendulum.toml"), "--count", "3", "--json"])
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.output)
+    report = out["problems"][0]
+    assert out["ok"] and report["right"] > 0 and report["wrong"] > 0
+    assert report["false_accepts"] == 0 and report["false_rejects"] == 0
+    checks = {c["check"] for c in report["cases"]}
+    assert {"schema", "render", "reference", "mistake", "right", "wrong"} <= checks
+
+
+def test_a_wrong_reference_fails_and_says_which_part():
+    report = validate(str(HERE / "vp-wrong-ref.toml"), count=2)
+    assert not report.ok
+    lines = _failed(report)
+    assert any("reference solution's omega is graded incorrect" in line for line in lines), lines
+
+
+def test_a_mistake_equal_to_the_reference_fails_and_says_which():
+    report = validate(str(HERE / "vp-mistake-is-ref.toml"), count=2)
+    lines = _failed(report)
+    assert any(line.startswith("mistake 1 of L: the mistake equals the reference") for line in lines), lines
+
+
+def test_a_sampling_box_outside_the_domain_fails_and_says_which():
+    result = CliRunner().invoke(main, ["validate", str(HERE / "vp-box-outside.toml")])
+    assert result.exit_code == 1
+    text = " ".join(result.output.split())
+    assert "parameter l: the sampling range [0.5, 2.0] is not inside its domain '(0, 1)'" in text, text
+
+
+def test_every_generated_wrong_answer_differs_from_the_reference_or_is_proved_right():
+    L = m * l**2 * theta.diff(t) ** 2 / 2 + m * g * l * sp.cos(theta) + m * g * l  # a constant term
+    slips = dict(wrong_answers("lagrangian", L, ["m", "g", "l"]))
+    dropped = [label for label, value in slips.items() if value != L and
+               proved_equal("lagrangian", value, L, frozenset({"m", "g", "l"}), _pendulum()) is not None]
+    assert dropped and all("term" in label and "g*l*m" in label for label in dropped), dropped
+
+
+def test_the_half_angle_form_only_where_no_angle_reaches_pi():
+    alpha = sp.Symbol("alpha")
+    domains = {"theta": sp.Reals, "alpha": sp.Interval.open(0, sp.pi / 2)}
+    assert half_angle_safe(sp.cos(alpha), domains) and not half_angle_safe(sp.cos(theta), domains)
+    labels = [label for label, _ in right_forms("expression", m * g * sp.sin(alpha), ["m", "g"], intervals=domains)]
+    assert "the tangent half-angle form" in labels
+
+
+def test_a_latex_echo_of_an_inverse_function_reads_back():
+    """Found by the generated answers (12.4): the LaTeX echo printed acos as \\operatorname{acos},
+    which the LaTeX reader does not know; it prints \\arccos now."""
+    from lagrade.answer.reading.latex import parse_latex_answer
+    from lagrade.verdicts.readback import as_latex
+
+    text = as_latex(sp.acos(sp.Rational(2, 3)))
+    assert parse_latex_answer(text, []) == sp.acos(sp.Rational(2, 3))
+
+
+def _pendulum():
+    from lagrade.problem.library import load_problem
+    from lagrade.verdicts.grade import references
+
+    return references(load_problem(str(HERE / "vp-pendulum.toml")))[""]
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(1800)
+def test_selftest_subset_has_no_false_accept_or_reject():
+    """CI's slow tier: the chapter self-test (benchmarks/selftest.py) on a fixed-seed subset."""
+    ids = ["12.1", "12.14", "12.22", "12.30", "12.43", "ex12.3"]
+    reports = [validate(pid, seed=0, count=4) for pid in ids]
+    failed = [f"{r.problem}: {c.detail}" for r in reports for c in r.cases if not c.ok]
+    assert not failed, failed
+    assert sum(r.count("right") + r.count("wrong") for r in reports) >= 200
