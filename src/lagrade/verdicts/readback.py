@@ -139,7 +139,7 @@ class _Latex(_Notation, LatexPrinter):
 
 
 _UNICODE = _UnicodeLine()
-_LATEX = _Latex()
+_LATEX = _Latex({"inv_trig_style": "full"})  # \arccos, which the LaTeX reader reads back
 
 
 def _key(k: object) -> str:
