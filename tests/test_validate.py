@@ -104,3 +104,14 @@ def test_selftest_subset_has_no_false_accept_or_reject():
     failed = [f"{r.problem}: {c.detail}" for r in reports for c in r.cases if not c.ok]
     assert not failed, failed
     assert sum(r.count("right") + r.count("wrong") for r in reports) >= 200
+
+
+def test_a_latex_echo_of_a_coordinate_of_several_letters_reads_back():
+    """Found by the generated answers (12.9's phip): the echo printed \\dot{phip}, which the LaTeX
+    reader refuses, and a bare phip reads back as a product of letters; it is \\mathrm{phip} now."""
+    from lagrade.answer.reading.latex import parse_latex_answer
+    from lagrade.verdicts.readback import as_latex
+
+    phip = sp.Function("phip")(t)
+    value = phip.diff(t) ** 2 * sp.sin(theta) + phip
+    assert parse_latex_answer(as_latex(value), ["phip", "theta"]) == value

@@ -82,7 +82,10 @@ def _latex_name(name: str) -> str:
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", head)
     if m and not tail:
         head, tail = m.group(1), m.group(2)
-    head = f"\\{head}" if head in _GREEK_LATEX and len(head) > 1 else head
+    # a name of several letters that is not a Greek letter is upright (\mathrm{phip}): bare, it reads
+    # back as a product of letters, and \dot{phip} not at all
+    head = f"\\{head}" if head in _GREEK_LATEX and len(head) > 1 else (
+        f"\\mathrm{{{head}}}" if len(head) > 1 else head)
     tail = f"\\{tail}" if tail in _GREEK_LATEX and len(tail) > 1 else tail
     return f"{head}_{{{tail}}}" if tail else head
 
