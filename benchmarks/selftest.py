@@ -1,6 +1,6 @@
 """The grader tested by the answers `lagrade validate` generates, on the whole chapter.
 
-    python benchmarks/selftest.py [--count 12] [--seed 0] [--markdown] [IDS...]
+    python benchmarks/selftest.py [--count 30] [--seed 0] [--jobs 2] [--markdown] [IDS...]
 
 Runs :func:`lagrade.uses.validate.run.validate` on every problem id (or those given): right answers
 generated from each reference (other forms) must get full marks, wrong ones (one slip each, unless
@@ -20,21 +20,29 @@ import time
 
 def main(argv: list[str] | None = None) -> int:
     from lagrade.problem.library import problem_ids
-    from lagrade.uses.validate.run import validate
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("ids", nargs="*")
-    ap.add_argument("--count", type=int, default=12, help="generated right and wrong answers per part (at most)")
+    ap.add_argument("--count", type=int, default=30, help="generated right and wrong answers per part (at most)")
+    ap.add_argument("--jobs", type=int, default=1, help="problems validated at once, each in a process of its own")
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--markdown", action="store_true", help="the totals and the slowest problems as Markdown")
     ap.add_argument("--json", help="also write every report to this file")
     args = ap.parse_args(argv)
     ids = args.ids or problem_ids()
+    import lagrade.uses.validate.run  # noqa: F401 (imported once, before the workers fork)
+
     start = time.monotonic()
     reports = []
     print(f"{'problem':<8} {'right':>6} {'wrong':>6} {'dropped':>8} {'FA':>4} {'FR':>4} {'other':>6} {'s':>7}")
-    for pid in ids:
-        r = validate(pid, seed=args.seed, count=args.count)
+    if args.jobs > 1:
+        from multiprocessing import get_context
+
+        pool = get_context("fork").Pool(args.jobs)
+        done = pool.imap(_one, [(pid, args.seed, args.count) for pid in ids])
+    else:
+        done = map(_one, [(pid, args.seed, args.count) for pid in ids])
+    for pid, r in zip(ids, done):
         reports.append(r)
         s = r.summary()
         other = len(s["failed"]) - s["false_accepts"] - s["false_rejects"]
@@ -63,6 +71,13 @@ def main(argv: list[str] | None = None) -> int:
         with open(args.json, "w", encoding="utf-8") as f:
             json.dump([r.as_json() for r in reports], f, indent=1)
     return 0 if all(r.ok for r in reports) else 1
+
+
+def _one(job: tuple[str, int, int]):
+    from lagrade.uses.validate.run import validate
+
+    pid, seed, count = job
+    return validate(pid, seed=seed, count=count)
 
 
 if __name__ == "__main__":
