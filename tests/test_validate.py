@@ -115,3 +115,20 @@ def test_a_latex_echo_of_a_coordinate_of_several_letters_reads_back():
     phip = sp.Function("phip")(t)
     value = phip.diff(t) ** 2 * sp.sin(theta) + phip
     assert parse_latex_answer(as_latex(value), ["phip", "theta"]) == value
+
+
+def test_a_scene_that_cannot_be_derived_fails_with_its_file_and_line(tmp_path):
+    """12.35 with dry friction declared as drag (tests/test_check_entry.py's case): one failed check,
+    the line that says where in the file."""
+    root = Path(__file__).resolve().parents[1]
+    src = (root / "problems" / "12.35.toml").read_text()
+    old_q = next(line for line in src.splitlines() if line.startswith("Q = { theta"))
+    old_effects = next(line for line in src.splitlines() if line.startswith("effects = ["))
+    effects = 'effects = ["holonomic_constraint", "constraint_force", "dissipation_drag"]'
+    src = src.replace(old_q, 'Q = { theta = "-mu*m*a**2*theta_d/Abs(theta_d)" }').replace(old_effects, effects)
+    path = tmp_path / "12.35.toml"
+    path.write_text(src)
+    report = validate(str(path), count=1)
+    lines = _failed(report)
+    line = 1 + src.splitlines().index(effects)
+    assert any(d.startswith(f"{path}:{line}: ") and d.endswith("declare dissipation_friction") for d in lines), lines

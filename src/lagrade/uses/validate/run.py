@@ -105,7 +105,8 @@ def validate(target: str, problem_dirs: tuple[Path, ...] = (), seed: int = 0, co
         return report
     report.problem, report.title = problem.id, problem.title
     report.cases.append(Case("schema", "", "the file loads: schema and domains (sampling boxes inside)", True))
-    _Validation(problem, report, random.Random(seed), count, grading_seconds).run(solution_path(target, problem))
+    dirs = (Path(target).parent, *problem_dirs) if Path(target).suffix == ".toml" else problem_dirs
+    _Validation(problem, report, random.Random(seed), count, grading_seconds, dirs).run(solution_path(target, problem))
     report.seconds = time.monotonic() - start
     return report
 
@@ -116,8 +117,9 @@ def _line(exc: BaseException) -> str:
 
 
 class _Validation:
-    def __init__(self, problem, report: Report, rng: random.Random, count: int, grading_seconds: float):
-        self.problem, self.report, self.rng, self.count = problem, report, rng, count
+    def __init__(self, problem, report: Report, rng: random.Random, count: int, grading_seconds: float,
+                 dirs: tuple[Path, ...] = ()):
+        self.problem, self.report, self.rng, self.count, self.dirs = problem, report, rng, count, dirs
         self.grading_seconds = grading_seconds
         self.positive = frozenset(p.name for s in problem.systems for p in problem.parameters_of(s.key)
                                   if p.positive)
@@ -130,13 +132,14 @@ class _Validation:
     # ------------------------------------------------------------------ the checks
 
     def run(self, solution: Path | None) -> None:
-        from lagrade.problem.library import SceneFileError
+        from lagrade.problem.library import scene_message
+        from lagrade.problem.spec import SceneError
 
         self._render()
         try:
             derived = {part.name: self._derived(part) for part in self.problem.parts}
-        except SceneFileError as exc:
-            self.add("reference", "", "the scene derives", False, detail=_line(exc))
+        except SceneError as exc:  # the file's line that says which scene and field
+            self.add("reference", "", "the scene derives", False, detail=_line(ValueError(scene_message(self.problem, exc, self.dirs))))
             return
         solved = self._solution(solution)
         for part in self.problem.parts:
@@ -206,16 +209,9 @@ class _Validation:
     def _derived(self, part) -> object | None:
         """The part's reference as a student would write it, derived from the file (None: this kind,
         or this part, has none to derive here: a motion, a table, conditions, a linearization)."""
-        from lagrade.problem.spec import SceneError
-
         if part.kind not in DERIVED or (part.kind == "eom" and part.linearized):
             return None
-        try:
-            mech = self.mech(part.system)
-        except SceneError:
-            from lagrade.problem.library import SceneFileError, scene_message
-
-            raise
+        mech = self.mech(part.system)  # a SceneError is the file's: run() reports its line
         names = mech.all_names
         if part.kind == "lagrangian":
             return to_answer_form(mech.L, names) if part.reference is None else self._from_text(part, part.reference)
