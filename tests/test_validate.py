@@ -132,3 +132,25 @@ def test_a_scene_that_cannot_be_derived_fails_with_its_file_and_line(tmp_path):
     lines = _failed(report)
     line = 1 + src.splitlines().index(effects)
     assert any(d.startswith(f"{path}:{line}: ") and d.endswith("declare dissipation_friction") for d in lines), lines
+
+
+def test_exact_judge_does_not_split_an_exponent_with_trig_in_it():
+    """Found by the generated answers (12.21): exp(2*u*(1 - cos(phi)**2)) and exp(2*u*sin(phi)**2)
+    were two independent exponentials to the exact judge, which then proved a right T, L and Q wrong
+    ("exact arithmetic shows a difference"). Such an exponent is outside its class now."""
+    from lagrade.answer.reading.load import load_answer
+    from lagrade.compare import exact
+    from lagrade.problem.library import load_problem, reference_dir
+    from lagrade.verdicts.grade import check
+
+    u, v, phi = sp.symbols("u v phi", real=True)
+    same = sp.exp(2 * (1 - sp.cos(phi) ** 2) * u) - sp.exp(2 * u * sp.sin(phi) ** 2)
+    assert exact.is_zero(same, frozenset()) is not False
+    problem = load_problem("12.21")
+    values = load_answer(reference_dir() / "12.21" / "answer.py", problem).values
+    phi = next(s for s in values["T"].free_symbols if s.name == "phi")
+    rewritten = values["T"].replace(lambda x: x.is_Pow and x.exp == 2 and x.base == sp.sin(phi),
+                                    lambda x: 1 - sp.cos(phi) ** 2)
+    assert rewritten != values["T"]
+    graded = check(problem, T=rewritten, only=["T"], read_as=()).parts[0]
+    assert graded.verdict == "correct", graded.feedback
