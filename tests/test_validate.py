@@ -154,3 +154,15 @@ def test_exact_judge_does_not_split_an_exponent_with_trig_in_it():
     assert rewritten != values["T"]
     graded = check(problem, T=rewritten, only=["T"], read_as=()).parts[0]
     assert graded.verdict == "correct", graded.feedback
+
+
+def test_a_latex_echo_of_a_parameter_of_several_letters_reads_back():
+    """Found by the generated answers (12.44's eps): the echo printed eps bare, which the LaTeX
+    reader reads as e*p*s; it is \\mathrm{eps} now."""
+    from lagrade.answer.reading.latex import parse_latex_answer
+    from lagrade.verdicts.readback import as_latex
+
+    x = sp.Function("x")(t)
+    eps, k = sp.symbols("eps k")
+    value = eps * x**4 / 4 + k * x**2 / 2
+    assert parse_latex_answer(as_latex(value), ["x"], known_names=["eps", "k"]) == value

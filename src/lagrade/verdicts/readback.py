@@ -133,6 +133,12 @@ class _UnicodeLine(_Notation, _OneLine):
 
 
 class _Latex(_Notation, LatexPrinter):
+    def _print_Symbol(self, expr: sp.Symbol, style: str = "plain") -> str:
+        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", expr.name):  # already LaTeX (the notation's \dot{x})
+            return super()._print_Symbol(expr, style)
+        name = _latex_name(expr.name)  # eps as \mathrm{eps}, not the product e p s
+        return name if "\\mathrm" in name else super()._print_Symbol(expr, style)
+
     def _notation(self, name: str, order: int) -> str:
         base = _latex_name(name)
         if not order:
