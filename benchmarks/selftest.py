@@ -31,6 +31,8 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     ids = args.ids or problem_ids()
     import lagrade.uses.validate.run  # noqa: F401 (imported once, before the workers fork)
+    import lagrade.verdicts.checkers  # noqa: F401
+    import lagrade.verdicts.readback  # noqa: F401
 
     start = time.monotonic()
     reports = []

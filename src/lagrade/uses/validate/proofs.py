@@ -41,6 +41,8 @@ def _unknowns(value: list) -> list[sp.Symbol]:
     highest: dict[str, int] = {}
     for eq in value:
         for d in sp.sympify(eq).atoms(sp.Derivative):
+            if not all(getattr(v, "name", None) == "t" for v in d.variables):
+                continue  # V(r)' in a force: not a rate
             name = getattr(d.expr, "func", None)
             if name is not None and hasattr(name, "__name__"):
                 highest[name.__name__] = max(highest.get(name.__name__, 0), len(d.variables))
@@ -70,6 +72,8 @@ def proved_equal(kind: str, wrong: object, reference: object, positive: frozense
         with time_bound(seconds):
             return _proved_equal(kind, wrong, reference, positive, mech)
     except _OutOfTime:
+        return None
+    except Exception:  # noqa: BLE001 (values of different shapes, or sympy failing: no proof)
         return None
 
 
