@@ -166,3 +166,19 @@ def test_a_latex_echo_of_a_parameter_of_several_letters_reads_back():
     eps, k = sp.symbols("eps k")
     value = eps * x**4 / 4 + k * x**2 / 2
     assert parse_latex_answer(as_latex(value), ["x"], known_names=["eps", "k"]) == value
+
+
+def test_a_hamiltonian_of_the_same_motion_is_proved_right_where_gauges_are_allowed():
+    """Found by the selftest (12.47, whose H has a gauge alternative): H with a0 and g swapped gives the
+    same motion (x'' = g + a0 - k*x/m) and gets full marks, rightly; the proof covers it now."""
+    from lagrade.problem.library import load_problem
+    from lagrade.uses.validate.proofs import same_motion
+    from lagrade.verdicts.grade import references
+
+    x, px = sp.Function("x")(t), sp.Function("p_x")(t)
+    a0, g, m, k, l0 = sp.symbols("a0 g m k l0")
+    H = px**2 / (2 * m) + k * x**2 / 2 + a0 * t * px + g * m * (a0 * t**2 / 2 - l0 - x)
+    mech = references(load_problem("12.47"))[""]
+    positive = frozenset({"a0", "g", "m", "k", "l0"})
+    assert same_motion(H.xreplace({a0: g, g: a0}), H, mech, positive) is not None
+    assert same_motion(H.xreplace({k: 2 * k}), H, mech, positive) is None

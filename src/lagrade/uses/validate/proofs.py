@@ -65,6 +65,38 @@ def _solved(eqs: list, unknowns: list[sp.Symbol], positive: frozenset[str]) -> l
         return None
 
 
+def same_motion(wrong: sp.Expr, reference: sp.Expr, mech, positive: frozenset[str], seconds: float = 6.0) -> str | None:
+    """A proof that two Hamiltonians give the same motion q(t) (the same q'' as a function of q, q'
+    and t), as the H of L and of a gauge L + dF(q, t)/dt do: what a part with a `gauge` alternative
+    accepts. None when either does not give p from q' (not solvable here) or the proof fails."""
+    try:
+        with time_bound(seconds):
+            a, b = _accelerations(to_symbols(wrong), mech.s), _accelerations(to_symbols(reference), mech.s)
+            if a is None or b is None:
+                return None
+            how = all_zero([x - y for x, y in zip(a, b)], positive)
+            return f"the same motion, as from another gauge L + dF/dt ({how})" if how else None
+    except _OutOfTime:
+        return None
+    except Exception:  # noqa: BLE001
+        return None
+
+
+def _accelerations(H: sp.Expr, s) -> list[sp.Expr] | None:
+    t = sp.Symbol("t")
+    rates = [sp.diff(H, p) for p in s.p]
+    solved = sp.solve([qd - r for qd, r in zip(s.qd, rates)], s.p, dict=True)
+    if len(solved) != 1:
+        return None
+    pdot = [-sp.diff(H, q) for q in s.q]
+    out = []
+    for r in rates:
+        acc = sp.diff(r, t) + sum(sp.diff(r, q) * e for q, e in zip(s.q, rates)) + \
+            sum(sp.diff(r, p) * e for p, e in zip(s.p, pdot))
+        out.append(acc.xreplace(solved[0]))
+    return out
+
+
 def proved_equal(kind: str, wrong: object, reference: object, positive: frozenset[str], mech=None,
                  seconds: float = 6.0) -> str | None:
     """A proof that ``wrong`` is as right as ``reference`` for a part of ``kind``, or None."""

@@ -373,6 +373,12 @@ class _Validation:
             proof = proved_equal(part.kind, value, other, self.positive, mech)
             if proof is not None:
                 return f"{what}: {proof}"
+        if part.kind == "hamiltonian" and any(alt.gauge for alt in part.alternatives):
+            from lagrade.uses.validate.proofs import same_motion
+
+            proof = same_motion(value, base, self.mech(part.system), self.positive)
+            if proof is not None:
+                return f"the part's gauge alternative: {proof}"
         return None
 
     def _mech_or_none(self, part):
