@@ -44,9 +44,10 @@ def _register() -> None:
     from lagrade.cli.doctor import doctor
     from lagrade.cli.problems import list_cmd, show, template
     from lagrade.cli.serve import serve, tokens
+    from lagrade.cli.validate import validate
 
     for command in (list_cmd, show, template, check, grade, export, report, gradescope, prairielearn, override,
-                    import_, bench, cache, doctor, serve, tokens):
+                    import_, bench, cache, doctor, serve, tokens, validate):
         main.add_command(command)
 
 

@@ -161,6 +161,12 @@ def _exact_floats(expr: sp.Expr) -> sp.Expr:
 def _canonical_term(term: sp.Expr) -> tuple[sp.Rational, bool, sp.Expr]:
     """(rational coefficient, imaginary?, canonical term M) of one term of an exponent's argument."""
     c, m = term.as_coeff_Mul()
+    # the terms' exponentials are independent only when the terms are Q-linearly independent, which
+    # their canonical forms show for rational functions and roots alone: sin(p)**2*u, cos(p)**2*u and u
+    # are three terms and one relation (validate's generated answers, 12.21: exp(u*(1 - cos(p)**2))
+    # was told apart from exp(u*sin(p)**2))
+    if m.has(sp.exp, sp.E, *[getattr(sp, n) for n in (*_TRIG, *_HYP)]):
+        raise OutsideClass("a trigonometric or exponential function inside an exponent or an angle")
     imaginary = False
     if m.has(sp.I):
         m = sp.expand(m / sp.I)

@@ -82,7 +82,10 @@ def _latex_name(name: str) -> str:
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", head)
     if m and not tail:
         head, tail = m.group(1), m.group(2)
-    head = f"\\{head}" if head in _GREEK_LATEX and len(head) > 1 else head
+    # a name of several letters that is not a Greek letter is upright (\mathrm{phip}): bare, it reads
+    # back as a product of letters, and \dot{phip} not at all
+    head = f"\\{head}" if head in _GREEK_LATEX and len(head) > 1 else (
+        f"\\mathrm{{{head}}}" if len(head) > 1 else head)
     tail = f"\\{tail}" if tail in _GREEK_LATEX and len(tail) > 1 else tail
     return f"{head}_{{{tail}}}" if tail else head
 
@@ -130,6 +133,12 @@ class _UnicodeLine(_Notation, _OneLine):
 
 
 class _Latex(_Notation, LatexPrinter):
+    def _print_Symbol(self, expr: sp.Symbol, style: str = "plain") -> str:
+        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", expr.name):  # already LaTeX (the notation's \dot{x})
+            return super()._print_Symbol(expr, style)
+        name = _latex_name(expr.name)  # eps as \mathrm{eps}, not the product e p s
+        return name if "\\mathrm" in name else super()._print_Symbol(expr, style)
+
     def _notation(self, name: str, order: int) -> str:
         base = _latex_name(name)
         if not order:
@@ -139,7 +148,7 @@ class _Latex(_Notation, LatexPrinter):
 
 
 _UNICODE = _UnicodeLine()
-_LATEX = _Latex()
+_LATEX = _Latex({"inv_trig_style": "full"})  # \arccos, which the LaTeX reader reads back
 
 
 def _key(k: object) -> str:
