@@ -131,6 +131,8 @@ LOG_ZERO = [
     sp.log(m / g) + sp.log(g) - sp.log(m),
     sp.log(6 * m) - sp.log(2) - sp.log(3) - sp.log(m),
     sp.log(sp.sqrt(m ** 2 + g ** 2)) - sp.log(m ** 2 + g ** 2) / 2,
+    sp.sqrt(x + 1) ** 2 - x - 1,  # the square of a principal root is its radicand, whatever its sign
+    (x ** 2 + 2 * x + 1) ** sp.Rational(3, 1) - (x + 1) ** 6,
     sp.log(2 * sp.pi * m) - sp.log(sp.pi) - sp.log(2 * m),
     sp.log(m ** 2 + 2 * m * g + g ** 2) - 2 * sp.log(m + g),
     sp.log((x ** 2 + 1) * m) - sp.log(x ** 2 + 1) - sp.log(m),  # x real: x**2 + 1 > 0
@@ -156,6 +158,13 @@ NEEDS_PROOF = [
     sp.log(x ** 2) - 2 * sp.log(x),  # x real: -2 pi I where x < 0
     sp.log(1 + (m / (m + 1)) ** 1000),  # a log of a polynomial of degree 1000: not factored
     sp.exp(2 * sp.log(m) * g),  # a log in an exponent
+    # a root of a power of a factor whose sign the domain does not fix: once modelled as the factor's own
+    # root, which made sqrt(expand(P**2)) equal to P (it is |P|) and (x + 1)**(3/2) equal to
+    # sqrt((x + 1)**3) (they differ in sign where x < -1)
+    sp.sqrt(m ** 2 - 100 * m + 2500) - (m - 50),
+    sp.sqrt(sp.expand(((3 - m) * (3 - g) * (3 - k) * (3 - l) * (3 - x)) ** 2)) - (3 - m) * (3 - g) * (3 - k) * (3 - l) * (3 - x),
+    sp.sqrt(x ** 3 + 3 * x ** 2 + 3 * x + 1) - (x + 1) ** sp.Rational(3, 2),
+    (x ** 2 + 2 * x + 1) ** sp.Rational(1, 4) - sp.sqrt(x + 1),
 ]
 
 

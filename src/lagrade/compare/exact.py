@@ -258,8 +258,15 @@ def _radical(base: sp.Expr, r: sp.Rational, domain=frozenset()) -> _Radical:
             if e % 2:
                 coeff = -coeff
         elif sign is None:
-            if e % 2 == 0 and (Fraction(e) * r).denominator == 1 and (Fraction(e) * r).numerator % 2 == 0:
+            er = Fraction(e) * r
+            if e % 2 == 0 and er.denominator == 1 and er.numerator % 2 == 0:
                 sign = 1  # (f**2k)**r an even integer power: no branch
+            elif e % 2 == 0:  # (f**2)**(1/2) is |f|, (f**2)**(1/4) the root of |f|: not f's own root where f < 0
+                raise OutsideClass("a root of an even power of a quantity whose sign the physical domain does not "
+                                   "fix (an absolute value)")
+            elif e != 1 and not (((e - 1) * r).denominator == 1 and ((e - 1) * r).numerator % 2 == 0):
+                # (f**3)**(1/2) is f*sqrt(f) only where f > 0 (it is -f*sqrt(f) where f < 0)
+                raise OutsideClass("a root of a power of a quantity whose sign the physical domain does not fix")
             else:
                 unknown += 1
         out.append((sp.expand(f), Fraction(e) * r))
