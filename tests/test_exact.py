@@ -165,6 +165,8 @@ NEEDS_PROOF = [
     sp.sqrt(sp.expand(((3 - m) * (3 - g) * (3 - k) * (3 - l) * (3 - x)) ** 2)) - (3 - m) * (3 - g) * (3 - k) * (3 - l) * (3 - x),
     sp.sqrt(x ** 3 + 3 * x ** 2 + 3 * x + 1) - (x + 1) ** sp.Rational(3, 2),
     (x ** 2 + 2 * x + 1) ** sp.Rational(1, 4) - sp.sqrt(x + 1),
+    sp.sqrt(1 - sp.sin(m / 10) ** 2) - sp.cos(m / 10),  # |cos(m/10)|: 1 for m < 5 pi, -1 beyond
+    sp.sqrt(1 - sp.cos(th) ** 2) - sp.sin(th),  # theta any real: |sin(theta)|
 ]
 
 
@@ -202,3 +204,18 @@ def test_zero_to_a_varying_power_is_never_proved_zero():
 
     assert proves_zero(sp.Pow(0, 50 - m), 1.0, POSITIVE) is None
     assert proves_zero(sp.sqrt(3 + 2 * sp.sqrt(2)) * g - sp.sqrt(2) * g - g, 1.0, POSITIVE) is True
+
+
+def test_a_root_of_a_square_of_a_trigonometric_function_is_exact_where_the_domain_fixes_its_sign():
+    """sqrt(1 - cos(alpha)**2) is sin(alpha) and sqrt(g/(h*tan(alpha)**2)) is sqrt(g/h)/tan(alpha) on
+    0 < alpha < pi/2 (issue 42's honest forms), decided exactly; on the real line they are not."""
+    from lagrade.problem.domains import Domain, parse_domain
+
+    a, h = sp.symbols("alpha h")
+    domain = {"alpha": Domain(a, parse_domain("(0, pi/2)"), (0.2, 1.2), "parameter", "alpha"),
+              "g": Domain(g, parse_domain("positive"), (0.5, 2.0), "parameter", "g"),
+              "h": Domain(h, parse_domain("positive"), (0.5, 2.0), "parameter", "h")}
+    assert is_zero(sp.sqrt(1 - sp.cos(a) ** 2) - sp.sin(a), domain) is True
+    assert is_zero(sp.sqrt(g / (h * sp.tan(a) ** 2)) - sp.sqrt(g / h) / sp.tan(a), domain) is True
+    assert is_zero(sp.sqrt(1 - sp.cos(a) ** 2) + sp.sin(a), domain) is False
+    assert is_zero(sp.sqrt(1 - sp.cos(a) ** 2) - sp.sin(a), {"g"}) is None

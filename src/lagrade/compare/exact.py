@@ -233,8 +233,9 @@ def _radical(base: sp.Expr, r: sp.Rational, domain=frozenset()) -> _Radical:
     """``base**r`` split into irreducible factors, where the split is the principal branch."""
     if base.has(sp.exp, sp.E, sp.log, sp.I, *[getattr(sp, n) for n in _HYP]):
         raise OutsideClass("a root of an exponential, logarithmic or complex expression")
-    if base.has(*[getattr(sp, n) for n in _TRIG]):
-        raise OutsideClass(TRIG_ROOT)
+    trig = base.has(*[getattr(sp, n) for n in _TRIG])
+    if trig:  # sqrt(1 - cos(alpha)**2) is sin(alpha) where the domain makes sin(alpha) > 0: whole powers only
+        base = sp.trigsimp(base)
     if _has_radical(base):
         raise OutsideClass("a nested root")
     if base.has(sp.I):
@@ -269,6 +270,8 @@ def _radical(base: sp.Expr, r: sp.Rational, domain=frozenset()) -> _Radical:
                 raise OutsideClass("a root of a power of a quantity whose sign the physical domain does not fix")
             else:
                 unknown += 1
+        if trig and f.has(*[getattr(sp, n) for n in _TRIG]) and (Fraction(e) * r).denominator != 1:
+            raise OutsideClass(TRIG_ROOT)
         out.append((sp.expand(f), Fraction(e) * r))
     if coeff < 0:
         if unknown or (2 * r).denominator != 1:
