@@ -90,10 +90,10 @@ def _wrong(answer):
 
 
 def _by_motion(answer):
-    """The right L plus a constant outside the exact class (log(2)): the motion decides it, and what it
+    """The right L plus a constant outside the exact class (atan(2); log(2) is inside it): the motion decides it, and what it
     is told names the preset's tolerances (the exact judge's verdicts do not depend on them)."""
     m1, l1, g = sp.symbols("m1 l1 g", positive=True)
-    return LoadedAnswer(values={**answer.values, "L": answer.values["L"] + g * l1 * m1 * sp.log(2)})
+    return LoadedAnswer(values={**answer.values, "L": answer.values["L"] + g * l1 * m1 * sp.atan(2)})
 
 
 def _feedback(result):

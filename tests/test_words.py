@@ -32,11 +32,11 @@ def test_feedback_levels():
 
 
 def test_lagrade_check_says_it_in_words_and_json_keeps_the_settings(tmp_path):
-    """An L the motion decides (a constant log(2) keeps it outside the exact class): the student reads the
+    """An L the motion decides (a constant atan(2) keeps it outside the exact class): the student reads the
     evidence in words, --json keeps the integrator's settings for the instructor."""
     ANSWER = tmp_path / "answer.toml"
     ANSWER.write_text('L = "(m1 + m2)*l1^2*theta1_d^2/2 + m2*l2^2*theta2_d^2/2 + m2*l1*l2*theta1_d*theta2_d*'
-                      'cos(theta1 - theta2) + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2) + g*l1*m1*log(2)"\n')
+                      'cos(theta1 - theta2) + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2) + g*l1*m1*atan(2)"\n')
     text = CliRunner().invoke(main, ["check", "12.14", str(ANSWER)]).output
     flat = " ".join(text.split())
     assert "gives the same motion as the true one" in flat and "evaluations" not in flat and "DOP853" not in flat
@@ -53,9 +53,9 @@ def test_the_feedback_says_each_tolerance_beside_what_it_decides(preset, tmp_pat
     from lagrade.compare.trajectory import ACCURACY
 
     acc = ACCURACY[preset]
-    # an L outside the exact class (a constant log(2)): the sampled states and the motion decide it
+    # an L outside the exact class (a constant atan(2)): the sampled states and the motion decide it
     L = ('L = "(m1 + m2)*l1^2*theta1_d^2/2 + m2*l2^2*theta2_d^2/2 + m2*l1*l2*theta1_d*theta2_d*cos(theta1 - theta2)'
-         ' + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2) + g*l1*m1*log(2)"\n')
+         ' + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2) + g*l1*m1*atan(2)"\n')
     answer = tmp_path / "answer.toml"
     answer.write_text(L)
     said = lagrade.check("12.14", answer, accuracy=preset, only=["L"]).parts[0].feedback

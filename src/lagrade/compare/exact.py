@@ -23,11 +23,16 @@ where zero is decided exactly with high probability (Schwartz-Zippel):
   roots of odd degree, and the constant radicands residues) at a random point; a nonzero value
   proves the expression nonzero as a function (so, on the open physical domain, somewhere in it); a
   zero at ``POINTS`` independent points says zero, wrongly with probability at most
-  ``(D/p)**POINTS`` for an expression of degree ``D`` (below 1e-20 for any answer the readers admit).
+  ``(D/p)**POINTS`` for an expression of degree ``D`` (below 1e-20 for any answer the readers admit);
+- ``log(F)`` of an ``F`` positive on the physical domain is ``sum c * log|F_i|`` over its irreducible
+  factors (and the primes of its content, and ``pi``), each ``log|F_i|`` a fresh variable
+  (`_log_terms`): logarithms of distinct irreducible polynomials are algebraically independent over
+  the rest. A log of a function (``log(cos(u))``), in an exponent or under a root is outside.
 
-Anything else (an inverse function, ``Abs``, ``sign``, ``Piecewise``, ``log``, a special function, a
-root whose branch the domain does not fix) is outside the class: ``None``, and the grader's other
-evidence (a proof on the domain, the motion) decides.
+Anything else (an inverse function, ``Abs``, ``sign``, ``Piecewise``, a special function, a power
+with a symbolic exponent (``0**u``, ``2**u``), a nested root, a root whose branch the domain does not
+fix) is outside the class: ``None``, and only a proof on the domain gives credit for it
+(`lagrade.verdicts.checkers.values.compare_scalar`).
 """
 
 from __future__ import annotations
@@ -47,11 +52,18 @@ from lagrade.compare.symbolic import _OutOfTime, time_bound
 POINTS = 2
 #: operations beyond which an expression is not mapped (no answer the readers admit comes near)
 MAX_OPS = 20_000
+#: the largest degree of a polynomial whose logarithm is split into the logs of its factors
+LOG_DEGREE = 40
 #: tries at a point before giving up (a denominator or a radicand that is not a residue there)
 TRIES = 200
 
 _TRIG = {"sin", "cos", "tan", "cot", "sec", "csc"}
 _HYP = {"sinh", "cosh", "tanh", "coth", "sech", "csch"}
+
+
+#: why a root of a real trigonometric radicand is outside the class (`needs_proof` lets the screen's
+#: fold rules judge it, as before: sqrt(1 - cos(alpha)**2) on 0 < alpha < pi/2 is honest)
+TRIG_ROOT = "a root of a trigonometric expression"
 
 
 class OutsideClass(Exception):
@@ -78,6 +90,7 @@ class _Plan:
     scale: dict[tuple[str, sp.Basic], int] = field(default_factory=dict)  # (z|y, M) -> N_M
     degree: dict[sp.Basic, int] = field(default_factory=dict)  # radicand f -> Q (w**Q = f)
     symbols: set[sp.Symbol] = field(default_factory=set)
+    logs: dict[sp.Basic, list[tuple[sp.Basic, Fraction]]] = field(default_factory=dict)  # log node -> [(F, c)]
 
 
 #: the physical domain as the judge takes it: a set of the names that are positive (the rest real), or
@@ -119,6 +132,15 @@ def _assume(expr: sp.Expr, domain) -> sp.Expr:
                 fixed[node] = sign * node.args[0] if isinstance(node, sp.Abs) else sp.Integer(sign)
         out = out.xreplace(fixed) if fixed else out
     return out
+
+
+def on_domain(expr: sp.Expr, domain) -> sp.Expr:
+    """``expr`` with its symbols' physical-domain assumptions, and the ``Abs`` and ``sign`` the domain
+    fixes replaced: what a proof (`lagrade.compare.symbolic.proves_zero`) should see."""
+    try:
+        return _assume(sp.sympify(expr), domain)
+    except Exception:  # noqa: BLE001  (the expression as it was: the proof sees less, nothing wrong)
+        return expr
 
 
 def sign_on_domain(f: sp.Expr, domain) -> int | None:
@@ -200,6 +222,8 @@ def _canonical_term(term: sp.Expr) -> tuple[sp.Rational, bool, sp.Expr]:
 def _exponent(arg: sp.Expr, kind: str) -> list[tuple[str, sp.Basic, int]]:
     """``exp(arg)`` (kind "y") or ``exp(I*arg)`` (kind "z") as powers of the variables y_M, z_M."""
     out: dict[tuple[str, sp.Basic], int] = {}
+    if arg.has(sp.log):  # exp(2*log(u)) is u**2: a log in an exponent is not an independent variable
+        raise OutsideClass("an exponential or trigonometric function of a logarithm")
     for term in sp.Add.make_args(sp.expand(arg)):
         if term == 0:
             continue
@@ -213,8 +237,11 @@ def _exponent(arg: sp.Expr, kind: str) -> list[tuple[str, sp.Basic, int]]:
 
 def _radical(base: sp.Expr, r: sp.Rational, domain=frozenset()) -> _Radical:
     """``base**r`` split into irreducible factors, where the split is the principal branch."""
-    if base.has(sp.exp, sp.E, *[getattr(sp, n) for n in (*_TRIG, *_HYP)]):
-        raise OutsideClass("a root of a trigonometric or exponential expression")
+    if base.has(sp.exp, sp.E, sp.log, sp.I, *[getattr(sp, n) for n in _HYP]):
+        raise OutsideClass("a root of an exponential, logarithmic or complex expression")
+    trig = base.has(*[getattr(sp, n) for n in _TRIG])
+    if trig:  # sqrt(1 - cos(alpha)**2) is sin(alpha) where the domain makes sin(alpha) > 0: whole powers only
+        base = sp.trigsimp(base)
     if _has_radical(base):
         raise OutsideClass("a nested root")
     if base.has(sp.I):
@@ -238,10 +265,19 @@ def _radical(base: sp.Expr, r: sp.Rational, domain=frozenset()) -> _Radical:
             if e % 2:
                 coeff = -coeff
         elif sign is None:
-            if e % 2 == 0 and (Fraction(e) * r).denominator == 1 and (Fraction(e) * r).numerator % 2 == 0:
+            er = Fraction(e) * r
+            if e % 2 == 0 and er.denominator == 1 and er.numerator % 2 == 0:
                 sign = 1  # (f**2k)**r an even integer power: no branch
+            elif e % 2 == 0:  # (f**2)**(1/2) is |f|, (f**2)**(1/4) the root of |f|: not f's own root where f < 0
+                raise OutsideClass("a root of an even power of a quantity whose sign the physical domain does not "
+                                   "fix (an absolute value)")
+            elif e != 1 and not (((e - 1) * r).denominator == 1 and ((e - 1) * r).numerator % 2 == 0):
+                # (f**3)**(1/2) is f*sqrt(f) only where f > 0 (it is -f*sqrt(f) where f < 0)
+                raise OutsideClass("a root of a power of a quantity whose sign the physical domain does not fix")
             else:
                 unknown += 1
+        if trig and f.has(*[getattr(sp, n) for n in _TRIG]) and (Fraction(e) * r).denominator != 1:
+            raise OutsideClass(TRIG_ROOT)
         out.append((sp.expand(f), Fraction(e) * r))
     if coeff < 0:
         if unknown or (2 * r).denominator != 1:
@@ -255,6 +291,80 @@ def _radical(base: sp.Expr, r: sp.Rational, domain=frozenset()) -> _Radical:
     for prime, e in sp.factorint(int(coeff.q)).items():
         out.append((sp.Integer(prime), -Fraction(e) * r))
     return _Radical(i_power, out)
+
+
+def _positive_on(f: sp.Expr, domain) -> bool:
+    return bool(f.is_positive) or sign_on_domain(f, domain) == 1
+
+
+def _log_terms(arg: sp.Expr, domain=frozenset()) -> list[tuple[sp.Basic, Fraction]]:
+    """``log(arg)`` as ``sum c * log|F|`` over the irreducible polynomial factors ``F`` of ``arg`` (primitive,
+    sign-normalised), its rational content's primes and ``pi``, when ``arg`` is positive on the whole
+    physical domain (then ``log(arg) = log|arg|``, and ``|arg|`` is the product of the factors' moduli
+    to integer powers; a factor under a root must itself be positive there).
+
+    The logarithms of distinct irreducible polynomials are algebraically independent over the rational
+    functions and the exponentials of them (Ostrowski; the Risch structure theorem), so each ``log|F|`` is
+    a fresh variable: a zero in the model is a zero in fact. For the constants (log 2, log 3, log pi)
+    independence is Schanuel's conjecture: relied on only to reject, never to accept."""
+    if arg.has(sp.I):
+        raise OutsideClass("a logarithm of a complex quantity")
+    if arg.has(sp.exp, sp.E, sp.log, *[getattr(sp, n) for n in (*_TRIG, *_HYP)]):
+        raise OutsideClass("a logarithm of a function")
+    if not _positive_on(arg, domain):
+        raise OutsideClass("a logarithm of a quantity that the physical domain does not make positive")
+    out: dict[sp.Basic, Fraction] = {}
+
+    def add(key: sp.Basic, c: Fraction) -> None:
+        out[key] = out.get(key, Fraction(0)) + c
+
+    def number(n: sp.Rational, r: Fraction) -> None:
+        for prime, e in sp.factorint(abs(int(n.p))).items():
+            add(sp.Integer(prime), r * e)
+        for prime, e in sp.factorint(int(n.q)).items():
+            add(sp.Integer(prime), -r * e)
+
+    def factor(b: sp.Expr, r: Fraction) -> None:
+        if b.is_Rational:
+            number(b, r)
+            return
+        if b is sp.pi:
+            add(sp.pi, r)
+            return
+        if b.is_Mul:
+            for x in b.args:
+                factor(x, r)
+            return
+        if b.is_Pow:
+            base, ex = b.args
+            if not ex.is_Rational:
+                raise OutsideClass("a logarithm of a power with a non-rational exponent")
+            if not ex.is_Integer and not _positive_on(base, domain):
+                raise OutsideClass("a logarithm of a root of a quantity whose sign the domain does not fix")
+            factor(base, r * Fraction(int(ex.p), int(ex.q)))
+            return
+        if _has_radical(b) or not b.is_polynomial():
+            num, den = sp.fraction(sp.together(b))
+            if den != 1:
+                factor(num, r)
+                factor(den, -r)
+                return
+            raise OutsideClass("a logarithm of a sum with roots in it")
+        if b.free_symbols and sp.Poly(b, *sorted(b.free_symbols, key=str)).total_degree() > LOG_DEGREE:
+            raise OutsideClass(f"a logarithm of a polynomial of degree above {LOG_DEGREE} (not factored)")
+        coeff, facs = sp.factor_list(b)
+        number(sp.Rational(coeff), r)
+        for f, e in facs:
+            if f is sp.pi:
+                add(sp.pi, r * e)
+                continue
+            f = sp.expand(f)
+            if f.could_extract_minus_sign():
+                f = -f
+            add(f, r * e)
+
+    factor(arg, Fraction(1))
+    return [(k, c) for k, c in out.items() if c and k != 1]
 
 
 def plan(expr: sp.Expr, domain=frozenset()) -> _Plan:
@@ -295,6 +405,8 @@ def plan(expr: sp.Expr, domain=frozenset()) -> _Plan:
         elif type(e).__name__ in _HYP:
             p.exps[e] = _exponent(e.args[0], "y")
             stack.extend(m for _, m, _ in p.exps[e])
+        elif isinstance(e, sp.log):
+            p.logs[e] = _log_terms(e.args[0], domain)
         else:
             raise OutsideClass(f"{type(e).__name__}")
     for terms in p.exps.values():  # exp(c*M) = v_M**(c*N_M), N_M the lcm of the denominators of M's c
@@ -409,6 +521,10 @@ class _Evaluator:
                 whole = self.ev(f) if s.denominator == 1 else self.roots[f]
                 n = s.numerator if s.denominator == 1 else int(s * q)
                 v = v * self.power(whole, n) % p
+        elif isinstance(e, sp.log):  # sum c * log|F|, each log|F| an independent variable
+            v = 0
+            for f, c in self.plan.logs[e]:
+                v = (v + self.var(("log", f)) * (c.numerator * self.inv(c.denominator))) % p
         else:
             name = type(e).__name__
             x = 1
@@ -438,6 +554,9 @@ def prepare(expr: sp.Expr, domain=frozenset()) -> tuple[sp.Expr, _Plan]:
     expr = _exact_floats(_assume(sp.sympify(expr), domain))
     if sp.count_ops(expr) > MAX_OPS:
         raise OutsideClass("an expression too large to map")
+    nested = [x for x in expr.atoms(sp.Pow) if not x.exp.is_Integer and not x.free_symbols and _has_radical(x.base)]
+    if nested:  # a constant root that denests (sqrt(3 + 2*sqrt(2)) is 1 + sqrt(2)): sympy's denesting is exact
+        expr = expr.xreplace({x: sp.sqrtdenest(x) for x in nested})
     return expr, plan(expr, domain)
 
 
@@ -468,6 +587,15 @@ def witness(quantity: str) -> Witness | None:
     return None if w is None else Witness(quantity, w.prime, w.value, w.point)
 
 
+def _name(k: object) -> str:
+    """A variable of the model as the witness names it: a symbol, exp(M/N), exp(I*M/N), log|F|."""
+    if not isinstance(k, tuple):
+        return str(k)
+    if k[0] == "log":
+        return f"log|{k[1]}|"
+    return f"exp({'I*' if k[0] == 'z' else ''}{k[1]}/N)"
+
+
 def is_zero(expr: sp.Expr, positive=frozenset(), seconds: float = 2.0, seed: int = 0) -> bool | None:
     """True when ``expr`` is identically zero on the physical domain, False when it is not (exactly),
     None when it is outside the class or the time ran out."""
@@ -489,8 +617,7 @@ def is_zero(expr: sp.Expr, positive=frozenset(), seconds: float = 2.0, seed: int
                 else:
                     return None
                 if value != 0:
-                    _LAST[0] = Witness("", p, value, {str(k) if not isinstance(k, tuple) else f"exp({'I*' if k[0] == 'z' else ''}{k[1]}/N)": v
-                                                      for k, v in evaluator.vars.items()})
+                    _LAST[0] = Witness("", p, value, {_name(k): v for k, v in evaluator.vars.items()})
                     return False
             return True
     except (OutsideClass, _OutOfTime):
@@ -573,6 +700,31 @@ def outside(expr: sp.Expr, positive=frozenset()) -> str | None:
     except Exception as exc:  # noqa: BLE001  (sympy failing to factor: outside, said so)
         return type(exc).__name__
     return None
+
+
+#: nodes the reading's screen (`lagrade.verdicts.checkers.admit`) judges itself: switches, inverse
+#: functions (folds), a problem's general functions and their derivatives
+_SCREENED = (sp.Abs, sp.sign, sp.Piecewise, sp.Heaviside, sp.Max, sp.Min, sp.floor, sp.ceiling, sp.re, sp.im,
+             sp.arg, sp.conjugate, sp.asin, sp.acos, sp.atan, sp.acot, sp.asec, sp.acsc, sp.atan2, sp.asinh,
+             sp.acosh, sp.atanh, sp.acoth, sp.asech, sp.acsch, sp.Derivative, sp.Subs, sp.Integral)
+
+
+def needs_proof(expr: sp.Expr, domain=frozenset()) -> str | None:
+    """Why agreement at sampled points cannot accept ``expr`` (outside the exact class, in a way the screen
+    does not already answer for), or None. ``0**(50 - m1)``, ``sqrt(exp(I*u/5))``, ``log(exp(I*u))``, a
+    nested root, a root of a quantity whose sign the domain does not fix: each equals a right answer
+    on the sampled box and not beyond it, and only a proof on the physical domain may accept it."""
+    from sympy.core.function import AppliedUndef
+
+    if isinstance(expr, sp.Equality):
+        expr = expr.lhs - expr.rhs
+    if not isinstance(expr, sp.Basic) or expr.has(*_SCREENED) or expr.atoms(AppliedUndef):
+        return None
+    why = outside(expr, domain)
+    if why is None or why == TRIG_ROOT or why.startswith("a function of an irrational constant") \
+            or why.startswith("a rational multiple of pi") or why == "an expression too large to map":
+        return None
+    return why
 
 
 def _point(symbols: list[sp.Symbol], domain) -> dict[sp.Symbol, sp.Expr] | None:

@@ -82,6 +82,7 @@ def _positive(expr: sp.Expr, positive: set[str]) -> sp.Expr:
 STEPS: list[tuple[str, Callable[[sp.Expr], sp.Expr]]] = [
     ("cancel", lambda e: sp.cancel(sp.together(e))),
     ("expand", lambda e: sp.expand(e)),
+    ("denest", lambda e: sp.expand(sp.sqrtdenest(sp.expand(e)))),  # sqrt(3 + 2*sqrt(2)) is 1 + sqrt(2)
     ("trig", lambda e: sp.cancel(sp.expand_trig(sp.expand(e)))),
     ("trigsimp", lambda e: sp.trigsimp(sp.cancel(sp.together(e)))),
     ("simplify", lambda e: sp.simplify(e)),
@@ -97,6 +98,8 @@ def proves_zero(expr: sp.Expr, seconds: float = 2.0, positive: set[str] = frozen
         return None
     if expr == 0:
         return True
+    if any(x.base.is_zero and not x.exp.is_number for x in expr.atoms(sp.Pow)):
+        return None  # 0**u is 0 for u > 0 and infinite for u < 0, and sympy's simplification takes it as 0
     for _name, step in STEPS:
         remaining = deadline - time.monotonic()
         if remaining <= 0:

@@ -30,7 +30,7 @@ SUBSET = preset_subset(CASES)
 def test_the_suite_covers_what_issue_31_asks():
     attacks = [c for c in CASES if c.expect == "no-credit"]
     honest = [c for c in CASES if c.expect == "full-marks"]
-    assert len([c for c in attacks if c.family != "hints"]) >= 40 and 6 <= len(honest) <= 20
+    assert len([c for c in attacks if c.family != "hints"]) >= 40 and 6 <= len(honest) <= 40
     assert len({c.problem for c in attacks}) >= 8
     assert {c.family for c in attacks} == FAMILIES - {"honest"}
     assert all(c.family == "honest" for c in honest) and all(c.family != "honest" for c in attacks)

@@ -123,6 +123,15 @@ def unproved(expr: sp.Basic) -> str | None:
     return _reasons(reasons)
 
 
+def flag(expr: sp.Basic, why: str) -> None:
+    """``expr`` needs a proof for a reason found after reading it (the exact judge could not model it:
+    `lagrade.compare.exact.outside`), unless the screen has flagged it already."""
+    screen = _SCREEN.get()
+    if screen is not None and not screen.pending(expr):
+        screen.flagged[expr] = why
+        screen.settled.discard(expr)
+
+
 def witness(certificate) -> None:
     """A refutation at sampled states, with its certificate (`lagrade.compare.certify`) or None."""
     screen = _SCREEN.get()

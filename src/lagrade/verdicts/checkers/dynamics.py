@@ -529,6 +529,17 @@ EXACT_WRONG = ("is not the true one: exact arithmetic shows a difference, even w
                "(a coefficient or a number in it is not the right one)")
 
 
+def _needs_proof(exprs: list[sp.Expr], ctx: Context, mech: Mechanics) -> None:
+    """Flag (`admit.flag`) an answer outside the exact class in a way the screen does not see
+    (`exact.needs_proof`: ``0**(9 - theta**2)``, ``sqrt(exp(2*I*theta))``): agreement at the sampled states
+    and along the sampled motions proves nothing beyond them, so only a proof may accept it."""
+    for e in exprs:
+        why = exact.needs_proof(e, ctx.domain(mech))
+        if why is not None:
+            admit.flag(e, f"it is outside the class of expressions decided exactly ({why})")
+            return
+
+
 def _exactly_wrong(part: Part, what: str, after: str = "") -> PartResult:
     """No credit, decided in exact arithmetic; what the screen had flagged (an inexact number) is said too."""
     flagged = admit.pending()
@@ -661,6 +672,7 @@ def check_lagrangian(ctx: Context, part: Part, value: object) -> PartResult:
         return mech.lagrange_rows(L_s)
 
     if c is not None and np.allclose(c, 1.0, rtol=rtol, atol=0):
+        _needs_proof([L_s], ctx, mech)
         decided = None if exact.outside(L_s, ctx.domain(mech)) else _exactly_zero(
             [a - b for a, b in zip(student_rows(), mech.EL)], ctx, mech, "your Lagrange equation {i} minus the true one")
         if decided is not None:
@@ -923,6 +935,7 @@ def check_eom(ctx: Context, part: Part, value: object) -> PartResult:
                           f"factor ({bad}) that becomes zero within the problem's physical range: where it does, "
                           "they no longer determine the accelerations; divide the factor out.")
     if an.fraction >= 1.0:
+        _needs_proof(rows, ctx, mech)
         proof, traj = _confirm(ctx, lambda: _prove_rows_equivalent(rows, mech, ctx),
                                lambda: _trajectory_lagrange(ctx, mech, part, student_acc, lambda: rows))
         moved = _motion_refutes(ctx, part, proof, traj)
@@ -1265,6 +1278,7 @@ def check_hamiltonian(ctx: Context, part: Part, value: object) -> PartResult:
         return hamilton_rows(H_s, mech)
 
     if same:
+        _needs_proof([H_s], ctx, mech)
         decided = None if exact.outside(H_s, ctx.domain(mech)) else _exactly_hamiltonian(H_s, ctx, mech)
         if decided is not None:
             if not decided:

@@ -115,6 +115,9 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
     if decided is None and student.has(sp.asin, sp.acos, sp.atan, sp.acsc, sp.asec):
         truth = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
         decided = None if truth is None else exact.same_angle(student, truth, ctx.domain(mech, part), ctx.symbolic_seconds)
+    beyond = exact.needs_proof(student, ctx.domain(mech, part)) if decided is None else None
+    if beyond is not None:  # outside the exact class: agreement where sampled proves nothing beyond the box
+        admit.flag(student, f"it is outside the class of expressions decided exactly ({beyond})")
     if decided is not None:
         if decided:
             admit.proved(student)
@@ -135,12 +138,16 @@ def compare_scalar(ctx: Context, part: Part, mech: Mechanics, student: sp.Expr, 
         if not ctx.prove_always and not flagged:  # analytic and equal at every sampled point: a proof
             return True, "numeric", ""              # would add time, not certainty
         sym_ref = _symbolic_reference(ref, mech, ctx.symbolic_seconds)
-        proof = proves_zero(student - sym_ref, ctx.symbolic_seconds, ctx.positive) if sym_ref is not None else None
+        proof = proves_zero(exact.on_domain(student - sym_ref, ctx.domain(mech, part)), ctx.symbolic_seconds,
+                            ctx.positive) if sym_ref is not None else None
         if proof:
             admit.proved(student)
             return True, "symbolic", ""
         if flagged:
-            return False, "numeric", f"cannot be accepted without a proof: {admit.unproved(student)}"
+            why = admit.unproved(student)
+            if beyond is not None:  # still pending: the part earns nothing, as for what the screen flags
+                admit.flag(student, why)
+            return False, "numeric", f"cannot be accepted without a proof: {why}"
         return True, "numeric", ""
     admit.proved(student)  # refuted: it earns nothing, so nothing about it is pending
     certify_difference(mech, student, ref, a, b, pts)
