@@ -127,18 +127,16 @@ def test_a_preview_that_never_ends_is_cut_off_and_the_server_keeps_answering(tmp
         ask = threading.Thread(target=lambda: out.update(browser.post(url, headers=csrf,
                                                                       json={"part": "L", "value": bomb}).json()),
                                daemon=True)
-        started = time.monotonic()
         ask.start()
-        slowest = 0.0
-        while ask.is_alive() and time.monotonic() - started < 20:
-            t = time.monotonic()
+        answered_meanwhile = 0  # health checks answered while the preview was still running
+        while ask.is_alive():
             assert client.get("/healthz").status_code == 200
-            slowest = max(slowest, time.monotonic() - t)
+            answered_meanwhile += ask.is_alive()
             time.sleep(0.2)
-        ask.join(timeout=max(0.0, 20 - (time.monotonic() - started)))
-        assert not ask.is_alive(), "the preview of a power bomb did not end in 20 s"
-        # refused by the readers' size estimate at once, or cut off by the preview's own bound: never a hang
-        assert ("longer than 3 s" in out["error"] or "too large" in out["error"]) and slowest < 1.0, out
+        ask.join()  # a hang is caught by the test's own timeout, not by a clock read here
+        # refused by the readers' size estimate at once, or cut off by the preview's own bound: never a hang,
+        # and the server answers others meanwhile (the preview runs off the event loop)
+        assert "too large" in out["error"] or ("longer than 3 s" in out["error"] and answered_meanwhile), out
         r = browser.post(url, headers=csrf, json={"part": "L", "value": "m1*x_d^2"}).json()
         assert r["error"] is None and "<math" in r["mathml"]
 
