@@ -68,3 +68,23 @@ def test_the_number_window_is_needed_for_a_root_the_exact_judge_does_not_take(mo
         assert part.score == 0 and "without being equal" in part.feedback, part.feedback
     else:
         assert part.verdict == "correct", part.feedback
+
+
+VERDICTS = Path(__file__).parent / "security" / "verdicts"
+
+
+@pytest.mark.parametrize("on", [True, False])
+def test_the_negligible_part_rule_and_the_three_states_are_still_needed_for_a_tiny_nonlinear_term(monkeypatch, on):
+    """Measured on the merged judge (`python scripts/rules_off.py negligible,three-state --
+    tests/security/verdicts/verdicts_harness.py`: 171 of 186 as expected, 15 wrong answers with
+    credit): 12.14's linearized eom with a wrong nonlinear term that is below every tolerance at the
+    sampled states is one of them. With the two rules on it earns nothing."""
+    if not on:
+        monkeypatch.setattr(admit, "_negligible", lambda *a, **k: [])
+        monkeypatch.setattr(dynamics, "_exact_refutation", lambda *a, **k: None)
+    result = lagrade.check("12.14", VERDICTS / "12.14" / "tiny-eom-wrong-nonlinear-term.py", accuracy="default")
+    part = next(p for p in result.parts if p.part == "eom")
+    if on:
+        assert part.score == 0, part.feedback
+    else:
+        assert part.verdict == "correct", part.feedback   # what the two rules are kept for

@@ -97,7 +97,7 @@ KINDS: dict[str, Kind] = {
         "`equilibrium` does", "derived", needs_reference=False),
     "hamiltonian": Kind(
         "expression in the coordinates and momenta p_<q> (symbols or functions of t)",
-        "H - H_ref depends on t only", "derived (Legendre transform of the scene's L)", needs_reference=False),
+        "H - H_ref is a constant (not a function of t)", "derived (Legendre transform of the scene's L)", needs_reference=False),
     "hamilton_eqs": Kind(
         "list of 2n equations in Derivative(q(t), t) and Derivative(p_q(t), t)",
         "they define the scene's rates", "derived", needs_reference=False),
