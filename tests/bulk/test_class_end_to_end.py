@@ -37,7 +37,7 @@ def test_class_of_232_submissions(tmp_path, sentinel):
     for path, word in classgen.EXPECTED_SKIPS.items():
         assert word in skipped[path], (path, skipped.get(path))
     assert "symbolic link" in skipped["s003/12.43_link.py"]
-    assert "both" in skipped["twin/12.43.py"] and "both" in skipped["twin/12.43.toml"]
+    assert "keep one" in skipped["twin/12.43.py"] and "keep one" in skipped["twin/12.43.toml"]
     assert con.execute("SELECT count(*) FROM grade_log").fetchone()[0] == len(expected)
 
     # run again: nothing is graded twice

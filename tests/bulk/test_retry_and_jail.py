@@ -142,9 +142,10 @@ def test_the_store_records_the_jail_and_exports_show_it(tmp_path):
 
 def _old_gradebook(db: Path) -> None:
     """A gradebook as lagrade wrote it before ``attempts``, ``jail``, ``review``, ``detail`` and
-    ``certificate``, with one grader crash in it."""
+    ``certificate`` (and ``motion_evidence``), with one grader crash in it."""
     old = "\n".join(line for line in SCHEMA.splitlines()
-                    if not line.lstrip().startswith(("attempts", "jail", "review", "detail", "certificate")))
+                    if not line.lstrip().startswith(("attempts", "jail", "review", "detail", "certificate",
+                                                                 "motion_evidence")))
     assert "attempts" not in old and "jail" not in old and "review " not in old
     con = sqlite3.connect(db)
     con.executescript(old)
