@@ -46,22 +46,8 @@ def instructor():
 @pytest.fixture(scope="session")
 def live_url(graded):
     """The session's graded app, also on a real socket of 127.0.0.1 (its graders are the session's: lifespan off)."""
-    import socket
-    import threading
-    import time
+    pytest.importorskip("uvicorn")
+    from serverkit import on_a_socket
 
-    uvicorn = pytest.importorskip("uvicorn")
-    app = graded[0]
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = s.getsockname()[1]
-    server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, lifespan="off", log_level="warning"))
-    thread = threading.Thread(target=server.run, daemon=True)
-    thread.start()
-    for _ in range(200):
-        if server.started:
-            break
-        time.sleep(0.05)
-    yield f"http://127.0.0.1:{port}"
-    server.should_exit = True
-    thread.join(timeout=10)
+    with on_a_socket(graded[0]) as url:
+        yield url

@@ -3,6 +3,7 @@ of its own: tests/bulk has a conftest too, and one name would shadow the other).
 
 from __future__ import annotations
 
+import contextlib
 import re
 import time
 import struct
@@ -163,3 +164,30 @@ def stop_serve(proc, kill: bool = False) -> None:
             pass
     os.killpg(proc.pid, signal.SIGKILL)
     proc.wait()
+
+
+@contextlib.contextmanager
+def on_a_socket(app):
+    """``app`` served by uvicorn on a free port of 127.0.0.1 in a thread (lifespan off: the caller's
+    graders), yielding its URL; stopped on exit."""
+    import socket
+    import threading
+    import time
+
+    import uvicorn
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, lifespan="off", log_level="warning"))
+    thread = threading.Thread(target=server.run, daemon=True)
+    thread.start()
+    for _ in range(200):
+        if server.started:
+            break
+        time.sleep(0.05)
+    try:
+        yield f"http://127.0.0.1:{port}"
+    finally:
+        server.should_exit = True
+        thread.join(timeout=10)

@@ -5,15 +5,12 @@ picture of a wrong motion, and no more than the course's feedback level lets a s
 from __future__ import annotations
 
 import json
-import socket
 import sys
-import threading
-import time
 from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from serverkit import REPO, bearer
+from serverkit import REPO, bearer, on_a_socket
 
 from lagrade.uses.server.tokens import issue
 
@@ -94,7 +91,6 @@ def test_lagrade_check_in_a_notebook_through_the_server(graded, live_url, tmp_pa
 @pytest.fixture(scope="module")
 def verdict_only_url(tmp_path_factory):
     """A graded server whose course shows the verdict alone, on a socket of 127.0.0.1."""
-    import uvicorn
     from fastapi.testclient import TestClient
     from serverkit import make_config
 
@@ -104,20 +100,8 @@ def verdict_only_url(tmp_path_factory):
     (tmp / "hw.toml").write_text('name = "hw-nb"\n[rules]\nfeedback = "verdict"\n[[problems]]\nid = "12.22"\n',
                                  encoding="utf-8")
     app = create_app(make_config(tmp, checks_per_minute=6000, check_burst=1000, student_in_flight=1000))
-    with TestClient(app), socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = s.getsockname()[1]
-        s.close()
-        server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, lifespan="off", log_level="warning"))
-        thread = threading.Thread(target=server.run, daemon=True)
-        thread.start()
-        for _ in range(200):
-            if server.started:
-                break
-            time.sleep(0.05)
-        yield app, f"http://127.0.0.1:{port}"
-        server.should_exit = True
-        thread.join(timeout=10)
+    with TestClient(app), on_a_socket(app) as url:
+        yield app, url
 
 
 def test_the_course_feedback_level_decides_what_a_notebook_shows(verdict_only_url):
