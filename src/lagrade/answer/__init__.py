@@ -11,10 +11,11 @@ coordinates as functions of time, and parameters as plain symbols matched by nam
 
 from __future__ import annotations
 
-import sympy as sp
-from sympy import *  # noqa: F401,F403  (re-exported so one import is enough)
+from typing import TYPE_CHECKING, Any
 
-t = sp.Symbol("t")
+if TYPE_CHECKING:
+    import sympy as sp
+    from sympy import *  # noqa: F401,F403
 
 
 def coordinates(names: str) -> tuple[sp.Function, ...] | sp.Function:
@@ -44,6 +45,32 @@ def dot(q: sp.Expr, order: int = 1) -> sp.Expr:
 #: who star-imports and leaves such a part unanswered must get "missing", not sympy's object.
 _ANSWER_NAMES = {"Q", "N"}
 
-__all__ = [n for n in sp.__all__ if n not in _ANSWER_NAMES] + [
-    "t", "coordinates", "parameters", "momenta", "dot",
-]
+_OWN = ["t", "coordinates", "parameters", "momenta", "dot"]
+
+
+def _load() -> None:
+    """Bind sympy's names here (``from sympy import *``), ``t`` and ``__all__``, on first use: a
+    check starts its jail's zygote by importing :mod:`lagrade.answer.jail.zygote`, which must not
+    wait for sympy first (the zygote's own import of sympy then runs beside this process's;
+    docs/performance.md)."""
+    import sympy
+
+    space = globals()
+    for name in sympy.__all__:
+        if name not in _OWN:
+            space.setdefault(name, getattr(sympy, name))
+    space["sp"] = sympy
+    space["t"] = sympy.Symbol("t")
+    space["__all__"] = [n for n in sympy.__all__ if n not in _ANSWER_NAMES] + _OWN
+
+
+def __getattr__(name: str) -> Any:
+    """PEP 562: the first name asked for (``t``, a sympy name, ``__all__`` of a star import) loads
+    them all; a submodule (``jail``, ``reading``) is imported as usual."""
+    if name.startswith("__") and name != "__all__":
+        raise AttributeError(name)
+    if "__all__" not in globals():
+        _load()
+        if name in globals():
+            return globals()[name]
+    raise AttributeError(f"module 'lagrade.answer' has no attribute '{name}'")
