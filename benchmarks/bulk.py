@@ -12,9 +12,9 @@ submissions (200 against 1000).
 The class is generated like the tests' (tests/bulk/classgen.py): the reference solution, equivalent
 rewrites, golden correct and wrong answers (typical mistakes) and broken files (syntax error, name
 error, empty, not UTF-8, bad TOML); no hostile files, whose cost is set by the time limits rather
-than by the grader. It copies 15 distinct files, so what lagrade caches by content (compiled rates,
-MathML) is reused more than in a real class: ``--distinct`` gives every Python answer values of
-its own, with the same grades. The grades are checked against the expected ones. ``lagrade grade`` runs as
+than by the grader. It copies 15 distinct files, so what lagrade keeps by content (a file's result,
+which a grader reuses for the same bytes; compiled rates, MathML) is reused more than in a real class:
+``--distinct`` gives every file bytes and every Python answer values of its own, with the same grades. The grades are checked against the expected ones. ``lagrade grade`` runs as
 its own process, as an instructor runs it; its peak memory is the largest sum of the proportional set sizes
 (PSS) of it and all its descendants (graders and sandbox children), sampled every 20 ms from /proc.
 The baseline runs ``lagrade check PROBLEM FILE --json`` in a fresh process per file, as a script
@@ -68,18 +68,24 @@ def make_distinct(root: Path, problem: str) -> int:
     """Give every Python answer values of its own: the generated class copies 15 files, so caches
     keyed by content (compiled rates per equation, MathML per answer text, sympy's own) hit far more
     often than in a real class. L gets a total time derivative d/dt(c P q) and every equation of
-    motion is multiplied by c, with c = k/(k+1) unique per file: the grades stay the same. Returns
-    the number of files changed."""
+    motion is multiplied by c, with c = k/(k+1) unique per file: the grades stay the same. Every
+    other file (text answers, broken files) is a program of its own, a comment line before its first
+    line (which moves every line: `lagrade.answer.reading.program_key`), so that no file's result is
+    reused for another's. Returns the number of Python answers changed."""
     from lagrade.problem.library import load_problem
 
     spec = load_problem(problem)
     changed = 0
-    for k, f in enumerate(sorted(root.rglob("*.py")), start=2):
-        src = f.read_text(encoding="utf-8", errors="replace")
-        out = distinct_source(src, spec, k)
-        if out != src:
-            f.write_text(out, encoding="utf-8")
-            changed += 1
+    for k, f in enumerate(sorted(p for p in root.rglob("*") if p.is_file()), start=2):
+        data = f.read_bytes()
+        if f.suffix == ".py":
+            src = data.decode("utf-8", errors="replace")
+            out = distinct_source(src, spec, k)
+            if out != src:
+                f.write_text(out, encoding="utf-8")
+                changed += 1
+                continue
+        f.write_bytes(f"# {k}\n".encode() + data)
     return changed
 
 
@@ -208,12 +214,14 @@ grader.close()  # its folder in /tmp
 """
 
 
-def own_code_seconds(problem: str, copies: dict[str, list], repeats: int = 3) -> float:
+def own_code_seconds(problem: str, copies: dict[str, list], repeats: int = 3, workers: int = 1) -> float:
     """What the answers' own code costs: the CPU time of each distinct Python file run plainly (no
     sandbox, no grading) in a child forked from a warmed grader, as the sandbox forks it (in a grader's
     environment: sympy's cache is as large, so the answers' code is as fast); the median
-    of ``repeats``, times the number of copies (``copies``: content hash -> [file, count]). No grader
-    can take less: it is the part of a class's time that grading cannot remove."""
+    of ``repeats``, times the number of its copies (``copies``: content hash -> [file, count]) a
+    class's graders run: a grader runs the same bytes once (`lagrade.uses.bulk.worker.Grader`'s
+    results by content), so at most ``workers`` times. No grader can take less than once: it is
+    the part of a class's time that grading cannot remove."""
     from lagrade.uses.bulk.worker import grader_environment
 
     counts = {key: fk for key, fk in copies.items() if fk[0].suffix == ".py"}
@@ -222,7 +230,7 @@ def own_code_seconds(problem: str, copies: dict[str, list], repeats: int = 3) ->
                          env=grader_environment(tempfile.gettempdir()))
     seconds = [float(x) for x in out.stdout.split()]
     per_file = [statistics.median(seconds[i::len(counts)]) for i in range(len(counts))]
-    return sum(s * k for s, (_, k) in zip(per_file, counts.values()))
+    return sum(s * min(k, workers) for s, (_, k) in zip(per_file, counts.values()))
 
 
 def check_grades(db: Path, expected: list, problem: str) -> int:
@@ -343,15 +351,15 @@ def main() -> None:
                 print(f"Dask LocalCluster ({r.workers} workers x 1 thread): {n} in {dask:.1f} s "
                       f"(cluster already up; includes warming its graders)")
 
-        own = own_code_seconds(args.problem, copies)
+        own = own_code_seconds(args.problem, copies, workers=args.workers)
         cores = os.cpu_count() or 1
         budget = base * n / 20 * cores
         print(f"where the CPU goes (median run): lagrade grade and all its processes used {cpu:.1f} s of CPU on "
-              f"{cores} cores; the answers' own code, each distinct file run alone in a fork of a warmed grader, "
-              f"takes {own:.1f} s of that; lagrade's share is {cpu - own:.1f} s = {(cpu - own) / n * 1000:.0f} ms "
-              f"per file (starting the graders included). At 20x the class would take {base * n / 20:.1f} s, at "
-              f"most {budget:.1f} s of CPU on {cores} cores, which leaves {(budget - own) / n * 1000:.0f} ms per "
-              f"file for lagrade.")
+              f"{cores} cores; the answers' own code, each distinct file run alone in a fork of a warmed grader "
+              f"(once per grader at most: a grader runs the same bytes once), takes at most {own:.1f} s of that; "
+              f"lagrade's share is at least {cpu - own:.1f} s = {(cpu - own) / n * 1000:.0f} ms per file (starting "
+              f"the graders included). At 20x the class would take {base * n / 20:.1f} s, at most {budget:.1f} s "
+              f"of CPU on {cores} cores, which leaves {(budget - own) / n * 1000:.0f} ms per file for lagrade.")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

@@ -85,14 +85,20 @@ def answers(mix: str = "costly") -> dict[str, list[tuple[str, bytes]]]:
 def pick(rng: random.Random, pool: dict, i: int, hostile: float, distinct=None) -> tuple[str, str, bytes]:
     """A student's answer. ``distinct`` (the problem, :func:`distinct_answers`): every right or wrong
     answer.py gets values of its own (benchmarks/bulk.py's rewrite, with the same grade), so that no
-    grader memo or content cache serves one student's values to another, as in a real class."""
+    grader memo or content cache serves one student's values to another, and every other file is a
+    program of its own (its text answers' values are shared: a class's text answers often are)."""
     kind = rng.choices(["right", "wrong", "broken", "hostile"], weights=[40, 30, 15, hostile])[0]
     name, data = rng.choice(pool[kind])
     if distinct is not None and kind in ("right", "wrong") and name.endswith(".py"):
         from bulk import distinct_source
 
         data = distinct_source(data.decode("utf-8", "replace"), distinct, i + 2).encode()
-    # each student's own file (a comment, in .py and .toml alike): no two attempts share their content
+    # each student's own file (a comment, in .py and .toml alike): no two attempts share their bytes.
+    # A comment after the last line leaves the program as it is (a server grades it once,
+    # lagrade.uses.bulk.result_memo); with ``distinct``, every file is a program of its own: the
+    # comment comes first, moving every line
+    if distinct is not None:
+        return kind, name, f"# student {i}\n".encode() + data
     return kind, name, data + f"\n# student {i}\n".encode()
 
 

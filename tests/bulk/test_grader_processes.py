@@ -196,6 +196,47 @@ def test_a_grader_gives_a_value_it_graded_before_the_verdict_it_got():
         grader.close()
 
 
+def test_a_grader_runs_the_same_program_once_and_a_bound_never_decides_for_the_next_copy(monkeypatch):
+    """A class hands in the same program again and again: a grader runs a file in the jail once and
+    gives every copy graded with the same settings that result, whatever its comments say (other
+    code, other settings: run again). A result a bound decided (here the answer's CPU limit) is not the file's own: the next
+    copy runs again."""
+    import lagrade.answer.reading.load as load
+    from lagrade.uses.bulk.worker import Grader
+
+    runs: list[bytes] = []
+    real = load.load_answer
+
+    def counted(path, *args, **kwargs):
+        runs.append(Path(path).read_bytes())
+        return real(path, *args, **kwargs)
+
+    grader = Grader({"12.14": problem_path("12.14").read_text()})
+    monkeypatch.setattr(load, "load_answer", counted)
+    try:
+        data = (reference_dir() / "12.14" / "answer.py").read_bytes()
+        limits = {"cpu_seconds": 10, "wall_seconds": 20, "memory_mb": 512, "grading_seconds": 60}
+        job = {"student": "a", "problem": "12.14", "suffix": ".py", "data": data, "accuracy": "default",
+               "limits": limits, "credit": None, "parts": [], "file_hash": ""}
+        first = grader.grade(job)
+        copy = grader.grade({**job, "student": "b", "data": data + b"\n# Bob's copy\n"})
+        assert len(runs) == 1
+        assert copy["student"] == "b" and first["student"] == "a"
+        assert {k: v for k, v in copy.items() if k not in ("student", "seconds")} == \
+               {k: v for k, v in first.items() if k not in ("student", "seconds")}
+        grader.grade({**job, "data": data + b"\nnote = 1\n"})  # a line of code more
+        grader.grade({**job, "accuracy": "strict"})  # other settings
+        grader.grade({**job, "read_back": True})  # the server's read-back asked for
+        assert len(runs) == 4
+        loop = b"while True:\n    pass\n"
+        bounded = {**job, "data": loop, "limits": {**limits, "cpu_seconds": 0.3, "wall_seconds": 5}}
+        assert grader.grade(bounded)["status"] == "timeout"
+        assert grader.grade({**bounded, "student": "b"})["status"] == "timeout"
+        assert len(runs) == 6
+    finally:
+        grader.close()
+
+
 def test_an_answers_child_is_killed_only_while_its_parent_is_the_one_seen():
     """The server stops a slow grading by killing its answer's children, found by one walk of /proc;
     a pid reused since then must not be signalled: the kill goes through a pidfd opened before the

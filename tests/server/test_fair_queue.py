@@ -142,3 +142,35 @@ def test_checks_sent_at_once_are_counted_before_they_are_stored(quiet_app):
     assert codes == [202] * 3 + [429] * 7
     q = app.state.server.queue
     assert sum(q._admitted.values()) == 0 and len(q._owner) == 3
+
+
+def test_the_same_program_from_another_student_gets_its_result_without_a_grader(quiet_app):
+    """A class hands in the same program again and again (here with each student's name in a
+    comment): once graded by any grader, the queue answers the next copy itself, as that student's
+    own attempt; another program, or an outcome a bound decided, goes to a grader."""
+    app, client = quiet_app
+    q = _queue(app, workers=2, in_flight=100)
+    db = app.state.server.db
+    right = (REPO / "reference_solutions" / "12.14" / "answer.py").read_bytes()
+    ids = {who: client.post("/api/v1/problems/12.14/check", headers=bearer(app, who),
+                            files={"file": ("answer.py", right + b"\n# by %s\n" % who.encode())}).json()["submission_id"]
+           for who in ("alice", "bob", "carol")}
+    other = client.post("/api/v1/problems/12.14/check", headers=bearer(app, "dave"),
+                        files={"file": ("answer.py", right + b"\nx = 1\n")}).json()["submission_id"]
+    first = q._next()
+    assert first["server_id"] == ids["alice"]
+    result = {"student": "alice", "problem": "12.14", "outcome": "graded", "status": "ok", "reason": "",
+              "score": 2.0, "max_score": 2.0, "problems": [], "seconds": 0.5, "jail": "none",
+              "parts": [{"part": "L", "verdict": "correct", "score": 1.0, "max_score": 1.0, "method": "exact",
+                         "feedback": "right", "read_back": ["L", "L"]}]}
+    q._done(first, dict(result))
+    nxt = q._next()  # bob's and carol's copies are answered here: dave's other program is next
+    assert nxt is not None and nxt["server_id"] == other and q._next() is None
+    for who in ("bob", "carol"):
+        att = db.attempt(ids[who])
+        assert att.graded and att.student == who and att.result["score"] == 2.0
+    assert q.results.hits == 2
+    q._done(nxt, {**result, "student": "dave", "status": "timeout", "outcome": "failed", "score": 0.0})
+    again = client.post("/api/v1/problems/12.14/check", headers=bearer(app, "erin"),
+                        files={"file": ("answer.py", right + b"\nx = 1\n# erin\n")}).json()["submission_id"]
+    assert q._next()["server_id"] == again  # a timeout is not the program's own: graded again

@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from lagrade.numbers.process_env import single_threaded_blas
+from lagrade.uses.bulk.result_memo import ResultMemo, content_key, result_key
 
 #: kinds of status a submission gets; ``ok`` means the file ran (its parts carry the verdicts)
 STATUSES = ("ok", "error", "syntax", "rejected", "timeout", "memory", "crashed", "grader-timeout",
@@ -51,6 +52,7 @@ class Grader:
         self.zygote = zygote.start(warm=True, directory=str(self.dir))
         self.memo = VerdictMemo()  # a class hands in the same values again and again
         self.pictures: dict[bytes, bytes | None] = {}  # a wrong file's picture, by its content (`_picture`)
+        self.results = ResultMemo()  # a class hands in the same program again and again
         (self.dir / "problems").mkdir(mode=0o700, exist_ok=True)  # the folder itself is traversable
         self.problems = {}
         for pid, text in problems.items():
@@ -84,6 +86,10 @@ class Grader:
         start = time.monotonic()
         problem = self.problems[job["problem"]]
         limits = job["limits"]
+        key = result_key(job)
+        kept = self._kept(job, key)
+        if kept is not None:
+            return kept
         work = Path(tempfile.mkdtemp(prefix="lagrade-job-", dir=self.dir))
         path = work / f"{job['problem']}{job['suffix']}"
         path.write_bytes(job["data"])
@@ -121,7 +127,7 @@ class Grader:
             shutil.rmtree(work, ignore_errors=True)
         unusable = loaded.fatal is not None and not loaded.values
         reason = str(loaded.fatal) if loaded.fatal is not None else ""
-        return {
+        out = {
             "student": job["student"], "problem": job["problem"],
             "outcome": "failed" if unusable else "graded",
             "status": _status(reason) if reason else "ok",
@@ -129,16 +135,31 @@ class Grader:
             "problems": result.problems, "parts": parts, "seconds": time.monotonic() - start,
             "jail": self.jail, **({"plot_png": picture} if picture else {}),
         }
+        self.results.put(key, out)
+        return out
+
+    def _kept(self, job: dict[str, Any], key: bytes) -> dict[str, Any] | None:
+        """The result of the same program graded before with the same settings
+        (`lagrade.uses.bulk.result_memo`), with the picture of its wrong motions when the job asks
+        for it and this grader drew it; None when the file is to be graded (a picture asked for and
+        not drawn yet sends it through grading: drawing needs its motions)."""
+        out = self.results.get({**job, "plot": False}, key)
+        if out is None:
+            return None
+        if job.get("plot") and any(p["verdict"] != "correct" for p in out["parts"]):
+            picture = self.pictures.get(content_key(job), False)
+            if picture is False:
+                return None
+            if picture:
+                out["plot_png"] = picture
+        return out
 
     def _picture(self, job: dict[str, Any], result, again: Callable[[], Any]) -> bytes | None:
         """The picture of a wrong answer's motions, drawn once per distinct file: a class hands in the
         same bytes again and again (the picture is a function of the file, the problem and the
         grading settings), and drawing one costs a grading again (a verdict kept by the memo carries
         no motion) and matplotlib's 0.1-0.4 s."""
-        import hashlib
-
-        key = hashlib.sha256(repr((job["problem"], job["suffix"], job["accuracy"], job.get("credit"),
-                                   job.get("hints"))).encode() + b"\0" + job["data"]).digest()
+        key = content_key(job)
         if key in self.pictures:
             self.pictures[key] = self.pictures.pop(key)  # most recently used last
             return self.pictures[key]

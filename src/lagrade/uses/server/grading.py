@@ -36,6 +36,7 @@ from typing import Any
 
 from lagrade.uses.bulk.assignment import Assignment
 from lagrade.uses.bulk.layout import Submission
+from lagrade.uses.bulk.result_memo import ResultMemo, result_key
 from lagrade.uses.bulk.runner import Plan, plan, problem_totals
 from lagrade.uses.bulk.worker import (CPU_BUDGET, GRADER_BUDGET, GraderProcess, WorkerDied, failed_result, look_after,
                                      stop_all, watch)
@@ -190,6 +191,8 @@ class GradingQueue:
         self._stopping = False
         self._thread: threading.Thread | None = None
         self.graded = 0
+        #: results by program, across the graders: a class hands in the same program again and again
+        self.results = ResultMemo()
         self._dask_warm = False  # the Dask workers' graders are warm (`_run_dask`)
         #: called with an attempt's id once its grade is written (the LMS grade sender's wake-up)
         self.on_graded = None
@@ -384,6 +387,8 @@ class GradingQueue:
             self._used[student].append((time.monotonic(), seconds))
 
     def _next(self) -> dict[str, Any] | None:
+        """The next attempt's job for a grader; one whose program was graded before with the same
+        settings (by any of the graders) gets that result here and now (`ResultMemo`)."""
         while True:
             with self._lock:
                 sid = self._pick()
@@ -395,7 +400,12 @@ class GradingQueue:
                 log.exception("attempt %s could not be read; it stays queued", sid)
                 job = None
             if job is not None:
-                return job
+                key = job["result_key"] = result_key(job)
+                kept = self.results.get(job, key)
+                if kept is None:
+                    return job
+                self._done(job, kept)
+                continue
             with self._lock:
                 self._forget(sid)
 
@@ -405,6 +415,8 @@ class GradingQueue:
             return  # what its killed answer left: the attempt is queued again (`_park`)
         with self._lock:
             self._forget(sid, float(result.get("seconds") or 0.0))
+        if "result_key" in job:
+            self.results.put(job["result_key"], result)
         try:
             plot = result.pop("plot_png", None)
             shown = _for_student(result, job["problem"], job["suffix"], job["data"])
