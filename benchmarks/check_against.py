@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import argparse
 import ctypes
+import json
 import os
 import statistics
 import subprocess
@@ -80,6 +81,7 @@ def main() -> None:
                     help="where the old commit is checked out (outside this tree)")
     ap.add_argument("--repeats", type=int, default=2)
     ap.add_argument("--markdown", action="store_true", help="one Markdown row for docs/performance.md")
+    ap.add_argument("--json", type=Path, help="also write the figures to this file (benchmarks/pinned.py reads it)")
     args = ap.parse_args()
     ctypes.CDLL(None).prctl(36, 1, 0, 0, 0)  # PR_SET_CHILD_SUBREAPER
     ids = args.ids or sorted(p.name for p in (ROOT / "reference_solutions").iterdir() if (p / "answer.py").exists())
@@ -112,6 +114,11 @@ def main() -> None:
               f"{statistics.median(r[i] for r in new):.3f} s; new/old {total(new, i) / total(old, i):.3f} of the "
               f"sums ({per:.3f} per check, median); over the floor: old {total(old, i) / total(floor, i):.2f}x, "
               f"new {total(new, i) / total(floor, i):.2f}x")
+    if args.json is not None:
+        args.json.write_text(json.dumps({key: {"old": total(old, i) / total(floor, i), "new": total(new, i) / total(floor, i),
+                                               "new_over_old": total(new, i) / total(old, i),
+                                               "floor_seconds": total(floor, i) / len(floor)}
+                                         for i, key in enumerate(("wall", "own_cpu", "all_cpu"))}))
     if args.markdown:
         print(f"| `python benchmarks/check_against.py --against {label} {' '.join(args.ids)}` | "
               + "; ".join(f"{name}: new/old {total(new, i) / total(old, i):.3f}, over the floor old "

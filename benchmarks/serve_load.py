@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import json
 import os
 import random
 import shutil
@@ -258,6 +259,7 @@ def main() -> None:
                                                               "(a real class's burst: no two students send one value)")
     ap.add_argument("--no-probe", action="store_true", help="skip the head-of-line probe")
     ap.add_argument("--probe-only", action="store_true", help="only the head-of-line probe")
+    ap.add_argument("--json", type=Path, help="also write the figures to this file (benchmarks/pinned.py reads it)")
     args = ap.parse_args()
     if args.probe_only:
         args.students = 0
@@ -357,6 +359,11 @@ def measure(args, work: Path) -> None:
     print(f"  the run's CPU spread over {os.cpu_count()} idle cores: {burst:.1f} s (what the burst's last grade would "
           f"wait for on an idle machine at best; on a loaded one the wall times above include the other load)")
     print(f"  errors {len(errors)}, lost {lost}, graded twice {twice}")
+    if args.json is not None:
+        args.json.write_text(json.dumps({
+            "p50": q[49], "p95": q[94], "max": max(ok, default=float("nan")), "throughput": len(ok) / wall,
+            "wall": wall, "server_cpu_ms": (cpu1[0] - cpu0[0]) / n * 1e3, "graders_cpu_ms": (cpu1[1] - cpu0[1]) / n * 1e3,
+            "burst_idle": burst, "errors": len(errors), "lost": lost, "twice": twice}))
     if probed is not None:
         print(f"  head-of-line probe: the right answer behind another student's ten infinite loops "
               f"{'graded' if probed['ok'] else 'NOT graded'} in {probed['seconds']:.2f} s "
