@@ -227,8 +227,10 @@ def own_code_seconds(problem: str, copies: dict[str, list], repeats: int = 3, wo
 
     counts = {key: fk for key, fk in copies.items() if fk[0].suffix == ".py"}
     distinct = [str(f) for f, _ in counts.values()] * repeats
+    # this checkout's grader whatever --lagrade-src says: the answers' code is the same under either
+    env = {**grader_environment(tempfile.gettempdir()), "PYTHONPATH": str(REPO / "src")}
     out = subprocess.run([sys.executable, "-c", OWN, problem, *distinct], capture_output=True, text=True, check=True,
-                         env=grader_environment(tempfile.gettempdir()))
+                         env=env)
     seconds = [float(x) for x in out.stdout.split()]
     per_file = [statistics.median(seconds[i::len(counts)]) for i in range(len(counts))]
     return sum(s * min(k, workers) for s, (_, k) in zip(per_file, counts.values()))
