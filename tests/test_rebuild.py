@@ -233,6 +233,40 @@ def test_a_repeated_subexpression_is_one_node():
     assert srepr_text(L).count("Function('theta1')") == 4
 
 
+def test_taking_an_expression_apart_raises_no_audit_event():
+    """The jail's child takes the answer's values apart under its audit hook, which runs on every
+    audited event: ``id()`` is one (``builtins.id``), and it cost a double pendulum's values 1,100
+    runs of the hook. Counted in a forked child (an audit hook cannot be removed)."""
+    import os
+    import sys
+
+    th1, th2 = sp.Function("theta1")(t), sp.Function("theta2")(t)
+    m, l = sp.symbols("m l", positive=True)
+    L = m * l**2 * (th1.diff(t) ** 2 + th1.diff(t) * th2.diff(t) * sp.cos(th1 - th2)) + m * l * sp.cos(th1) + sp.pi / 2
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # pragma: no cover  (the child)
+        try:
+            os.close(read)
+            events: list[str] = []
+            sys.addaudithook(lambda event, args: events.append(event))
+            nodes = expr_nodes(L)
+            events = [e for e in events if e != "sys.addaudithook"]
+            os.write(write, json.dumps({"events": events, "nodes": nodes}).encode())
+        finally:
+            os._exit(0)
+    os.close(write)
+    data = b""
+    while chunk := os.read(read, 1 << 16):
+        data += chunk
+    os.close(read)
+    os.waitpid(pid, 0)
+    out = json.loads(data)
+    assert out["events"] == []
+    assert out["nodes"] == json.loads(json.dumps(expr_nodes(L)))  # what it made is what it makes here
+    assert rebuild_nodes(out["nodes"]) == L and ["Const", "pi"] in out["nodes"]
+
+
 def _chain(tag, n):
     return [["Symbol", "x", {}]] + [[tag, k, k] for k in range(n)]
 

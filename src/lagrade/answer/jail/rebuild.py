@@ -359,7 +359,12 @@ _NODE_CONSTANTS: dict[str, Any] = {
     "nan": sp.nan, "EulerGamma": sp.EulerGamma, "GoldenRatio": sp.GoldenRatio, "Catalan": sp.Catalan,
     "true": sp.true, "false": sp.false,
 }
-_CONSTANT_NAMES = {id(value): name for name, value in _NODE_CONSTANTS.items()}  # singletons: by identity
+#: an object's identity as a number, unique among live objects (``object``'s own hash is its address,
+#: rotated); unlike ``id()`` it raises no audit event. In the jail's child every audit event runs the
+#: tripwire hook (about 1 us): ``id()`` in `expr_nodes` made 1,100 of them for a double pendulum's
+#: values, 1.5 ms of the 2.5 its encoding took.
+_identity = object.__hash__
+_CONSTANT_NAMES = {_identity(value): name for name, value in _NODE_CONSTANTS.items()}  # singletons: by identity
 
 #: constructors a node calls by name with its arguments, as ``srepr`` writes ``Name(arg, ...)``;
 #: numbers, symbols, applied functions and constants have nodes of their own, and the rest
@@ -392,7 +397,7 @@ def expr_nodes(value: Any) -> list[list[Any]] | None:
     try:
         while stack:
             e = stack[-1]
-            if id(e) in index:
+            if _identity(e) in index:
                 stack.pop()
                 continue
             kind = type(e)
@@ -404,14 +409,14 @@ def expr_nodes(value: Any) -> list[list[Any]] | None:
                 node = ["Rational", int(e.p), int(e.q)]
             elif kind is sp.Float:
                 node = ["Float", mpf_text(e._mpf_, repr_dps(e._prec)), int(e._prec)]
-            elif id(e) in _CONSTANT_NAMES:
-                node = ["Const", _CONSTANT_NAMES[id(e)]]
+            elif _identity(e) in _CONSTANT_NAMES:
+                node = ["Const", _CONSTANT_NAMES[_identity(e)]]
             elif isinstance(e, sp.Basic) and (isinstance(e, AppliedUndef) or kind.__name__ in _NODE_CALLS):
-                waiting = [a for a in e.args if id(a) not in index]
+                waiting = [a for a in e.args if _identity(a) not in index]
                 if waiting:
                     stack.extend(reversed(waiting))
                     continue
-                refs = [index[id(a)] for a in e.args]
+                refs = [index[_identity(a)] for a in e.args]
                 node = ["Apply", e.func.__name__, *refs] if isinstance(e, AppliedUndef) else [kind.__name__, *refs]
             else:
                 return None
@@ -421,7 +426,7 @@ def expr_nodes(value: Any) -> list[list[Any]] | None:
             if key not in same:
                 same[key] = len(nodes)
                 nodes.append(node)
-            index[id(e)] = same[key]
+            index[_identity(e)] = same[key]
     except Exception:  # noqa: BLE001  (an object sympy cannot take apart: srepr says what it can)
         return None
     return nodes
