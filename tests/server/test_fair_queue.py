@@ -174,3 +174,19 @@ def test_the_same_program_from_another_student_gets_its_result_without_a_grader(
     again = client.post("/api/v1/problems/12.14/check", headers=bearer(app, "erin"),
                         files={"file": ("answer.py", right + b"\nx = 1\n# erin\n")}).json()["submission_id"]
     assert q._next()["server_id"] == again  # a timeout is not the program's own: graded again
+
+
+def test_the_same_file_again_is_given_back_beyond_the_grader_time_a_minute(quiet_app):
+    # a resubmission is the attempt stored before and costs no grading: no 429 for it (a student
+    # whose file took long to grade asks for its grade again); a new file is bounded as before
+    app, client = quiet_app
+    q = _queue(app, seconds_per_minute=30)
+    alice = bearer(app, "alice")
+    first = client.post("/api/v1/problems/12.14/check", headers=alice, files={"file": ("answer.py", LOOP)})
+    assert first.status_code == 202
+    q._used["alice"].append((time.monotonic() - 20, 31.0))
+    again = client.post("/api/v1/problems/12.14/check", headers=alice, files={"file": ("answer.py", LOOP)})
+    assert again.status_code == 202 and again.json()["submission_id"] == first.json()["submission_id"]
+    assert q._admitted["alice"] == 0  # nothing left counted as in flight
+    other = client.post("/api/v1/problems/12.14/check", headers=alice, files={"file": ("answer.py", LOOP + b"x = 1\n")})
+    assert other.status_code == 429

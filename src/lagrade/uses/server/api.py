@@ -136,14 +136,17 @@ async def submit(server, who, pid: str, suffix: str, data: bytes, plot: bool = F
 
     rules = server.assignment.rules
     plot = plot and (rules.feedback != "verdict" or who.instructor)  # verdict only: no picture of the motion
-    server.limit(who)  # admitted by the queue: counted as in flight until queued or settled
+    key = {"student": who.student, "problem": pid, "file_hash": file_hash(data), "grading_hash": server.plan.keys[pid],
+           "version": server.plan.version}
+    # the same file again is the attempt stored before: it costs no grading, so only the rate of
+    # requests bounds it (a student who resubmits after a long grading gets it back, not a 429)
+    admitted = await asyncio.to_thread(server.db.stored, **key) is None
+    server.limit(who, admit=admitted)  # admitted by the queue: counted as in flight until queued or settled
     try:
         sid, new = await asyncio.to_thread(
-            server.db.submit, student=who.student, problem=pid, suffix=suffix, data=data, file_hash=file_hash(data),
-            grading_hash=server.plan.keys[pid], version=server.plan.version,
-            max_attempts=None if who.instructor else rules.attempts)
+            server.db.submit, suffix=suffix, data=data, max_attempts=None if who.instructor else rules.attempts, **key)
     except BaseException as exc:
-        if server.queue is not None:
+        if server.queue is not None and admitted:
             server.queue.settle(who.student)
         if isinstance(exc, AttemptsUsed):
             raise HTTPException(403, str(exc)) from None
@@ -151,7 +154,7 @@ async def submit(server, who, pid: str, suffix: str, data: bytes, plot: bool = F
     if server.queue is not None:
         if new:
             server.queue.put(sid, who.student, plot)
-        else:
+        elif admitted:
             server.queue.settle(who.student)
     att = await server.queue.wait(sid, server.config.wait_seconds) if server.queue is not None else None
     if att is None or not att.graded:

@@ -508,6 +508,14 @@ class Database:
             self._add_student(c, student)
             return new.inserted_primary_key[0], True
 
+    def stored(self, *, student: str, problem: str, file_hash: str, grading_hash: str, version: str) -> int | None:
+        """The attempt :meth:`submit` would give this content for this grading again, or None."""
+        with self.engine.connect() as c:
+            return c.execute(select(server_submissions.c.id).where(
+                server_submissions.c.student == student, server_submissions.c.problem == problem,
+                server_submissions.c.file_hash == file_hash, server_submissions.c.grading_hash == grading_hash,
+                server_submissions.c.grader_version == version)).scalar_one_or_none()
+
     @staticmethod
     def _count(c, student: str, problem: str, upto: int | None = None) -> int:
         q = select(func.count()).select_from(server_submissions).where(

@@ -215,15 +215,16 @@ class Server:
     def csrf(self, who: Who) -> str:
         return csrf_token(self.secret, who.session) if who.session else ""
 
-    def limit(self, who: Who, preview: bool = False) -> None:
-        """429 with Retry-After: beyond the rate of requests, or (a check) beyond what one student may
-        have in flight or use of the graders' time a minute (:meth:`GradingQueue.admit`)."""
+    def limit(self, who: Who, preview: bool = False, admit: bool = True) -> None:
+        """429 with Retry-After: beyond the rate of requests, or (a check, unless ``admit`` is False: a
+        file stored before, which costs no grading) beyond what one student may have in flight or use
+        of the graders' time a minute (:meth:`GradingQueue.admit`)."""
         wait = (self.preview_limit if preview else self.check_limit).take(who.student)
         if wait:
             seconds = max(1, math.ceil(wait))
             raise HTTPException(429, f"too many {'previews' if preview else 'checks'}; try again in {seconds} s",
                                 headers={"Retry-After": str(seconds)})
-        if not preview and self.queue is not None and (over := self.queue.admit(who.student)) is not None:
+        if not preview and admit and self.queue is not None and (over := self.queue.admit(who.student)) is not None:
             wait, why = over
             seconds = max(1, math.ceil(wait))
             raise HTTPException(429, f"{why}; try again in {seconds} s", headers={"Retry-After": str(seconds)})
