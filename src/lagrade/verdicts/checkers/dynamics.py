@@ -29,7 +29,7 @@ from lagrade.verdicts.checkers.base import (
 )
 from lagrade.compare.certify import Certificate, certify, outside_span, sign_change, zero_at
 from lagrade.compare.equations import CompiledRows, analyse_rows
-from lagrade.compare import exact
+from lagrade.compare import coprime, exact
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, proves_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs, confirm_refutation
 from lagrade.derive.effects import machinery
@@ -625,9 +625,27 @@ def _row_factors(row: sp.Expr, qdd: list[sp.Symbol], positive: set[str]) -> tupl
         return [], []
     num = sp.fraction(sp.together(assumed))[0]
     poly = sp.Poly(num, *acc)
-    common = sp.gcd_list(poly.coeffs()) if len(poly.coeffs()) > 1 else poly.coeffs()[0]
+    common = _common_factor(poly.coeffs()) if len(poly.coeffs()) > 1 else poly.coeffs()[0]
     factors = [f for f, _ in sp.factor_list(common)[1] if f.free_symbols] if common.free_symbols else []
     return factors, [f for b in bases if b.free_symbols for f, _ in sp.factor_list(b)[1] if f.free_symbols]
+
+
+def _common_factor(coefficients: list[sp.Expr]) -> sp.Expr:
+    """``sp.gcd_list(coefficients)`` up to a constant factor (which the factors taken from it ignore): in the
+    ring sympy's gcd would use, a monomial when `coprime.monomial_gcd` proves the gcd is one (the common
+    case, at a fraction of the cost), else sympy's gcd itself."""
+    from sympy.polys.polyerrors import PolificationFailed
+    from sympy.polys.polytools import parallel_poly_from_expr
+
+    try:
+        polys, opt = parallel_poly_from_expr(coefficients)
+    except PolificationFailed:
+        polys = []
+    if polys and all(p.domain.is_ZZ or p.domain.is_QQ for p in polys):
+        low = coprime.monomial_gcd([p.as_dict(native=True) for p in polys])
+        if low is not None:
+            return sp.Mul(*(g**e for g, e in zip(opt.gens, low) if e))
+    return sp.gcd_list(coefficients)
 
 
 def _singular_factor(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -> str | None:
