@@ -880,7 +880,32 @@ def linear_rows(rows: list[sp.Expr], unknowns: list[sp.Symbol], what: str, secon
 def _slopes(row: sp.Expr, unknowns: list[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:
     """d row / d u for each unknown ``u`` the row contains (computed once: the linearity test and the
     switch test both read them)."""
-    return {u: sp.diff(row, u) for u in unknowns if row.has(u)}
+    return slopes(row, [u for u in unknowns if row.has(u)])
+
+
+def slopes(row: sp.Expr, unknowns: list[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:
+    """``{u: sp.diff(row, u)}``, the same sympy expressions, read off the terms where the row is plainly
+    linear: every term free of the unknowns, or one unknown times factors free of them (``c1*...*ck*u``).
+    sympy differentiates such a term by the Leibniz rule, factor by factor: every other factor's
+    derivative is 0, so the term's is ``Mul(c1, ..., ck)``, and the row's the ``Add`` of those (its other
+    terms' are 0), which is what this builds; sympy's product rule through every factor of a long row is
+    the cost it saves. Any other row is differentiated by sympy."""
+    wanted = set(unknowns)
+    parts: dict[sp.Symbol, list[sp.Expr]] = {u: [] for u in unknowns}
+    for term in sp.Add.make_args(row):
+        factors = list(sp.Mul.make_args(term))
+        hits = [f for f in factors if f in wanted]
+        if len(hits) > 1:
+            break
+        if hits:
+            factors.remove(hits[0])
+        if any(f.has(*unknowns) for f in factors):
+            break
+        if hits:
+            parts[hits[0]].append(sp.Mul(*factors))
+    else:
+        return {u: sp.Add(*parts[u]) for u in unknowns}
+    return {u: sp.diff(row, u) for u in unknowns}
 
 
 def _is_linear(slopes: dict[sp.Symbol, sp.Expr]) -> bool:

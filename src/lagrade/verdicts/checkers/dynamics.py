@@ -619,7 +619,7 @@ def _row_factors(row: sp.Expr, qdd: list[sp.Symbol], positive: set[str]) -> tupl
     and every denominator are of one sign, there is none to find (the common case, at no factoring)."""
     assumed = exact._assume(row, positive)
     acc = [exact._assume(a, positive) for a in qdd]
-    coefficients = [c for a in acc if (c := sp.diff(assumed, a)) != 0]
+    coefficients = [c for c in admit.slopes(assumed, acc).values() if c != 0]  # sp.diff(assumed, a), cheaper
     bases = list(exact.poles(assumed))  # what it divides by, anywhere (a tan(u)'s cos(u) too)
     if coefficients and _definite(min(coefficients, key=sp.count_ops)) and all(_definite(b) for b in bases):
         return [], []
