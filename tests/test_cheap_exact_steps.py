@@ -21,7 +21,8 @@ def test_slopes_are_sympys_derivatives_for_every_shape_of_row():
     rng = random.Random(3)
     atoms = [a, b, x, sp.sin(x), sp.cos(x - y), sp.Abs(x), a + b, sp.Rational(2, 3), -1, 2, sp.sqrt(a),
              1 / (a + x), sp.Float(1.5)]
-    nonlinear = [u**2, sp.sin(u), u * v, 1 / u, u + a, sp.Abs(u)]
+    nonlinear = [u**2, sp.sin(u), u * v, 1 / u, u + a, sp.Abs(u), a * u + b, 2 * (x * v - u) + sp.sin(x),
+                 (u + a) * (v + b), u * (v + 2 * x), sp.Add(u * a, b * (u + x * v), evaluate=False)]
     for _ in range(400):
         terms = []
         for _ in range(rng.randint(1, 4)):
@@ -64,3 +65,24 @@ def test_a_shared_factor_is_never_proved_away():
     assert all(monomial_gcd([f, g], seed) is None for seed in range(20))
     h = sp.Poly(x1**2 * x2 * (x2**3 + 7) + x1**3, x1, x2).as_dict(native=True)  # gcd with f: x1 only
     assert monomial_gcd([sp.Poly(x1 * (x1 * x2 + 1), x1, x2).as_dict(native=True), h]) == (1, 0)
+
+
+def test_the_constant_split_is_sympys_as_independent():
+    from lagrade.verdicts.checkers.admit import _independent
+
+    rng = random.Random(5)
+    atoms = [a, b, x, y, sp.pi, sp.sqrt(2), sp.Rational(-3, 7), 2, -1, sp.exp(-1000), sp.sin(x), sp.log(3), sp.I,
+             sp.Float(0.25)]
+
+    def tree(depth: int) -> sp.Expr:
+        if depth == 0 or rng.random() < 0.3:
+            return sp.sympify(rng.choice(atoms))
+        op = rng.choice([sp.Add, sp.Mul, sp.Mul, lambda *z: sp.Pow(z[0], rng.choice([2, -1, sp.S.Half])),
+                         lambda *z: sp.cos(z[0])])
+        return sp.sympify(op(*[tree(depth - 1) for _ in range(rng.randint(2, 4))]))
+
+    for _ in range(500):
+        for node in sp.preorder_traversal(tree(4)):
+            if (node.is_Add or node.is_Mul) and node.free_symbols:
+                assert sp.srepr(_independent(node)) == \
+                    sp.srepr(node.as_independent(*node.free_symbols, as_Add=node.is_Add)), node

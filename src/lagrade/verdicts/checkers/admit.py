@@ -284,13 +284,32 @@ def _constants(expr: sp.Basic) -> list[sp.Basic]:
             out.append(e)
             continue
         if e.is_Add or e.is_Mul:
-            const, rest = e.as_independent(*e.free_symbols, as_Add=e.is_Add)
+            const, rest = _independent(e)
             if not const.is_Atom:
                 out.append(const)
             stack.extend(sp.Add.make_args(rest) if e.is_Add else sp.Mul.make_args(rest))
             continue
         stack.extend(e.args)
     return out
+
+
+def _independent(e: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """``e.as_independent(*e.free_symbols, as_Add=e.is_Add)`` for a sum or product, the same expressions,
+    built as sympy builds them. sympy sifts the arguments by ``a.has(*(a.free_symbols & symbols))``, a
+    search of each argument's tree; where every free symbol of a commutative ``e`` is a Symbol that is
+    exactly "the argument has a free symbol", which this tests instead."""
+    from sympy.core.add import _unevaluated_Add
+    from sympy.core.mul import _unevaluated_Mul
+
+    free = e.free_symbols
+    if not e.is_commutative or not all(isinstance(s, sp.Symbol) for s in free):
+        return e.as_independent(*free, as_Add=e.is_Add)
+    args = list(e.args) if e.is_Add else e.args_cnc()[0]
+    indep = [a for a in args if not a.free_symbols]
+    depend = [a for a in args if a.free_symbols]
+    if e.is_Add:
+        return sp.Add(*indep), _unevaluated_Add(*depend)
+    return sp.Mul(*indep), _unevaluated_Mul(*depend)
 
 
 def _constructs(expr: sp.Expr, part: Part, mech) -> list[str]:
@@ -884,28 +903,37 @@ def _slopes(row: sp.Expr, unknowns: list[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]
 
 
 def slopes(row: sp.Expr, unknowns: list[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:
-    """``{u: sp.diff(row, u)}``, the same sympy expressions, read off the terms where the row is plainly
-    linear: every term free of the unknowns, or one unknown times factors free of them (``c1*...*ck*u``).
-    sympy differentiates such a term by the Leibniz rule, factor by factor: every other factor's
-    derivative is 0, so the term's is ``Mul(c1, ..., ck)``, and the row's the ``Add`` of those (its other
-    terms' are 0), which is what this builds; sympy's product rule through every factor of a long row is
-    the cost it saves. Any other row is differentiated by sympy."""
-    wanted = set(unknowns)
-    parts: dict[sp.Symbol, list[sp.Expr]] = {u: [] for u in unknowns}
-    for term in sp.Add.make_args(row):
-        factors = list(sp.Mul.make_args(term))
-        hits = [f for f in factors if f in wanted]
-        if len(hits) > 1:
-            break
-        if hits:
-            factors.remove(hits[0])
-        if any(f.has(*unknowns) for f in factors):
-            break
-        if hits:
-            parts[hits[0]].append(sp.Mul(*factors))
-    else:
-        return {u: sp.Add(*parts[u]) for u in unknowns}
-    return {u: sp.diff(row, u) for u in unknowns}
+    """``{u: sp.diff(row, u)}``, the same sympy expressions, built the way sympy builds them where the row
+    is plainly linear (`_plain_slope`); any other row is differentiated by sympy. sympy's product rule
+    through every factor of a long row is the cost this saves (a millisecond a row)."""
+    out = {}
+    for u in unknowns:
+        d = _plain_slope(row, u)
+        out[u] = sp.diff(row, u) if d is None else d
+    return out
+
+
+def _plain_slope(e: sp.Expr, u: sp.Symbol) -> sp.Expr | None:
+    """d e / d u as sympy's ``diff`` gives it, for ``e`` made of sums and products in which ``u`` enters a
+    product through one factor only and is reached that way down to ``u`` itself; None for any other
+    shape. sympy differentiates a sum term by term (``Add(*[a.diff(u) ...])``) and a product by the
+    Leibniz rule (``Mul`` of the factors with one of them differentiated, summed over the factors):
+    the factors free of ``u`` have derivative 0, so only the one with ``u`` leaves a term, the product
+    of the others and its derivative; a subexpression free of ``u`` is 0 and ``u`` itself 1."""
+    if e == u:
+        return sp.S.One
+    if not e.has(u):
+        return sp.S.Zero
+    if e.is_Add:
+        parts = [_plain_slope(a, u) for a in e.args]
+        return None if any(p is None for p in parts) else sp.Add(*parts)
+    if e.is_Mul:
+        hit = [i for i, f in enumerate(e.args) if f.has(u)]
+        if len(hit) != 1:
+            return None
+        d = _plain_slope(e.args[hit[0]], u)
+        return None if d is None else sp.Mul(*e.args[:hit[0]], d, *e.args[hit[0] + 1:])
+    return None
 
 
 def _is_linear(slopes: dict[sp.Symbol, sp.Expr]) -> bool:

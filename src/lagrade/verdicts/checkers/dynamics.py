@@ -1170,16 +1170,20 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
     eq_exprs = [mech.parse(mech.system.equilibrium.get(name, "0")) for name in mech.names]
     pargs = [*mech.params, *extra]
     q_star = evaluate(eq_exprs, [T, *pargs], [pts[T], *pts.args(pargs)])
-    state = [*mech.s.qdd, *mech.s.qd, *mech.s.q]
     args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *pargs]
     zeros = np.zeros((n, pts.K))
     at_eq = [*q_star, *zeros, *zeros, pts[T], *pts.args(pargs)]
 
-    def linear_part(exprs):
-        jac = evaluate([sp.diff(e, v) for e in exprs for v in state], args, at_eq)
+    def derivatives(e: sp.Expr) -> list[sp.Expr]:  # d e/d(state), the accelerations' read off a linear row
+        return [*admit.slopes(e, list(mech.s.qdd)).values(), *(sp.diff(e, v) for v in [*mech.s.qd, *mech.s.q])]
+
+    def linear_part(exprs, derivs=None):
+        derivs = derivs or [derivatives(e) for e in exprs]
+        jac = evaluate([d for row in derivs for d in row], args, at_eq)
         return jac.reshape(len(exprs), 3 * n, pts.K), evaluate(exprs, args, at_eq)
 
-    A_s, g0 = linear_part(rows)
+    slopes = [derivatives(e) for e in rows]  # the student's: for the linear parts, and their rows below
+    A_s, g0 = linear_part(rows, slopes)
     key = (part.name, tuple(part.symbols))  # the states above depend on nothing else
     if key not in mech.linearized:
         mech.linearized[key] = linear_part(mech.EL)
@@ -1199,8 +1203,8 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
         consistent.append(ok)
     at = {**dict(zip(mech.s.q, eq_exprs)), **{v: 0 for v in [*mech.s.qd, *mech.s.qdd]}}
 
-    def affine(e: sp.Expr) -> list[sp.Expr]:  # [d e/d(state) | e], at equilibrium
-        return [*(sp.diff(e, v).xreplace(at) for v in state), e.xreplace(at)]
+    def affine(e: sp.Expr, derivs: list[sp.Expr] | None = None) -> list[sp.Expr]:  # [d e/d(state) | e], at equilibrium
+        return [*(d.xreplace(at) for d in derivs or derivatives(e)), e.xreplace(at)]
 
     if ("affine", key) not in mech.linearized:  # the true rows' [d/d(state) | value]: once per problem
         mech.linearized[("affine", key)] = ([affine(e) for e in mech.EL], None)
@@ -1209,7 +1213,7 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
 
     def their_row(i: int) -> list[sp.Expr]:
         if i not in theirs:
-            theirs[i] = affine(rows[i])
+            theirs[i] = affine(rows[i], slopes[i])
         return theirs[i]
 
     for i in [i for i, ok in enumerate(consistent) if not ok]:
