@@ -1,5 +1,5 @@
 """The warm grader's cheaper steps give what the costly ones gave (issue 48): the slopes of a plainly
-linear row read off its terms (`admit.slopes`) are sympy's derivatives, and a monomial gcd proved modulo
+linear row read off its terms (`compare.equations.slopes`) are sympy's derivatives, and a monomial gcd proved modulo
 a prime (`compare.coprime`) is sympy's gcd up to a constant."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ import random
 import sympy as sp
 
 from lagrade.compare.coprime import monomial_gcd
-from lagrade.verdicts.checkers.admit import slopes
+from lagrade.compare.equations import slopes
 from lagrade.verdicts.checkers.dynamics import _common_factor
 
 a, b, c = sp.symbols("a b c", positive=True)

@@ -35,6 +35,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from lagrade.compare.equations import slopes
 from lagrade.derive.effects import DISSIPATION
 from lagrade.verdicts.result import PartResult
 from lagrade.problem.spec import Part
@@ -877,19 +878,19 @@ def linear_rows(rows: list[sp.Expr], unknowns: list[sp.Symbol], what: str, secon
 
     out = []
     for i, row in enumerate(rows, 1):
-        slopes = _slopes(row, unknowns)
-        if not _is_linear(slopes):
+        ds = _slopes(row, unknowns)
+        if not _is_linear(ds):
             try:
                 with time_bound(seconds):
                     row = sp.numer(sp.together(row))
-                    slopes = _slopes(row, unknowns)
-                    linear = _is_linear(slopes)
+                    ds = _slopes(row, unknowns)
+                    linear = _is_linear(ds)
             except _OutOfTime:
                 linear = False
             if not linear:
                 raise Refuted(f"equation {i} is not linear in the {what} (even with its denominators cleared), so "
                               f"{what} other than the true ones satisfy it too: your equations allow other {what}")
-        if any(d.has(*SWITCHES) for d in slopes.values()):
+        if any(d.has(*SWITCHES) for d in ds.values()):
             raise Refuted(f"in equation {i} the {what} are multiplied by a switch (Piecewise, Heaviside, Max, "
                           f"sign, ...): where it is zero the equation says nothing, and other {what} satisfy it")
         out.append(row)
@@ -900,40 +901,6 @@ def _slopes(row: sp.Expr, unknowns: list[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]
     """d row / d u for each unknown ``u`` the row contains (computed once: the linearity test and the
     switch test both read them)."""
     return slopes(row, [u for u in unknowns if row.has(u)])
-
-
-def slopes(row: sp.Expr, unknowns: list[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:
-    """``{u: sp.diff(row, u)}``, the same sympy expressions, built the way sympy builds them where the row
-    is plainly linear (`_plain_slope`); any other row is differentiated by sympy. sympy's product rule
-    through every factor of a long row is the cost this saves (a millisecond a row)."""
-    out = {}
-    for u in unknowns:
-        d = _plain_slope(row, u)
-        out[u] = sp.diff(row, u) if d is None else d
-    return out
-
-
-def _plain_slope(e: sp.Expr, u: sp.Symbol) -> sp.Expr | None:
-    """d e / d u as sympy's ``diff`` gives it, for ``e`` made of sums and products in which ``u`` enters a
-    product through one factor only and is reached that way down to ``u`` itself; None for any other
-    shape. sympy differentiates a sum term by term (``Add(*[a.diff(u) ...])``) and a product by the
-    Leibniz rule (``Mul`` of the factors with one of them differentiated, summed over the factors):
-    the factors free of ``u`` have derivative 0, so only the one with ``u`` leaves a term, the product
-    of the others and its derivative; a subexpression free of ``u`` is 0 and ``u`` itself 1."""
-    if e == u:
-        return sp.S.One
-    if not e.has(u):
-        return sp.S.Zero
-    if e.is_Add:
-        parts = [_plain_slope(a, u) for a in e.args]
-        return None if any(p is None for p in parts) else sp.Add(*parts)
-    if e.is_Mul:
-        hit = [i for i, f in enumerate(e.args) if f.has(u)]
-        if len(hit) != 1:
-            return None
-        d = _plain_slope(e.args[hit[0]], u)
-        return None if d is None else sp.Mul(*e.args[:hit[0]], d, *e.args[hit[0] + 1:])
-    return None
 
 
 def _is_linear(slopes: dict[sp.Symbol, sp.Expr]) -> bool:

@@ -28,7 +28,7 @@ from lagrade.verdicts.checkers.base import (
     read_sympy,
 )
 from lagrade.compare.certify import Certificate, certify, outside_span, sign_change, zero_at
-from lagrade.compare.equations import CompiledRows, analyse_rows
+from lagrade.compare.equations import CompiledRows, analyse_rows, slopes
 from lagrade.compare import coprime, exact
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, proves_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs, confirm_refutation
@@ -619,7 +619,7 @@ def _row_factors(row: sp.Expr, qdd: list[sp.Symbol], positive: set[str]) -> tupl
     and every denominator are of one sign, there is none to find (the common case, at no factoring)."""
     assumed = exact._assume(row, positive)
     acc = [exact._assume(a, positive) for a in qdd]
-    coefficients = [c for c in admit.slopes(assumed, acc).values() if c != 0]  # sp.diff(assumed, a), cheaper
+    coefficients = [c for c in slopes(assumed, acc).values() if c != 0]  # sp.diff(assumed, a), cheaper
     bases = list(exact.poles(assumed))  # what it divides by, anywhere (a tan(u)'s cos(u) too)
     if coefficients and _definite(min(coefficients, key=sp.count_ops)) and all(_definite(b) for b in bases):
         return [], []
@@ -1175,15 +1175,15 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
     at_eq = [*q_star, *zeros, *zeros, pts[T], *pts.args(pargs)]
 
     def derivatives(e: sp.Expr) -> list[sp.Expr]:  # d e/d(state), the accelerations' read off a linear row
-        return [*admit.slopes(e, list(mech.s.qdd)).values(), *(sp.diff(e, v) for v in [*mech.s.qd, *mech.s.q])]
+        return [*slopes(e, list(mech.s.qdd)).values(), *(sp.diff(e, v) for v in [*mech.s.qd, *mech.s.q])]
 
     def linear_part(exprs, derivs=None):
         derivs = derivs or [derivatives(e) for e in exprs]
         jac = evaluate([d for row in derivs for d in row], args, at_eq)
         return jac.reshape(len(exprs), 3 * n, pts.K), evaluate(exprs, args, at_eq)
 
-    slopes = [derivatives(e) for e in rows]  # the student's: for the linear parts, and their rows below
-    A_s, g0 = linear_part(rows, slopes)
+    their_derivs = [derivatives(e) for e in rows]  # the student's: for the linear parts, and their rows below
+    A_s, g0 = linear_part(rows, their_derivs)
     key = (part.name, tuple(part.symbols))  # the states above depend on nothing else
     if key not in mech.linearized:
         mech.linearized[key] = linear_part(mech.EL)
@@ -1213,7 +1213,7 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
 
     def their_row(i: int) -> list[sp.Expr]:
         if i not in theirs:
-            theirs[i] = affine(rows[i], slopes[i])
+            theirs[i] = affine(rows[i], their_derivs[i])
         return theirs[i]
 
     for i in [i for i, ok in enumerate(consistent) if not ok]:
