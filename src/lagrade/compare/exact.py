@@ -226,8 +226,23 @@ def _canonical_term(term: sp.Expr) -> tuple[sp.Rational, bool, sp.Expr]:
     return coeff, imaginary, sp.expand(num) / sp.expand(den)
 
 
+#: (argument, kind) -> `_exponent`'s answer: a function of the argument alone, and the same few angles
+#: (theta1, theta1 - theta2) come back in every answer to a problem
+_EXPONENTS: dict[tuple[sp.Basic, str], list[tuple[str, sp.Basic, int]]] = {}
+
+
 def _exponent(arg: sp.Expr, kind: str) -> list[tuple[str, sp.Basic, int]]:
     """``exp(arg)`` (kind "y") or ``exp(I*arg)`` (kind "z") as powers of the variables y_M, z_M."""
+    known = _EXPONENTS.get((arg, kind))
+    if known is None:
+        known = _exponent_of(arg, kind)  # OutsideClass is raised each time, not kept
+        if len(_EXPONENTS) >= 4096:
+            _EXPONENTS.clear()
+        _EXPONENTS[(arg, kind)] = known
+    return list(known)
+
+
+def _exponent_of(arg: sp.Expr, kind: str) -> list[tuple[str, sp.Basic, int]]:
     out: dict[tuple[str, sp.Basic], int] = {}
     if arg.has(sp.log):  # exp(2*log(u)) is u**2: a log in an exponent is not an independent variable
         raise OutsideClass("an exponential or trigonometric function of a logarithm")

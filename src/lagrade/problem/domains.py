@@ -88,6 +88,12 @@ def _finite(end: sp.Expr) -> bool:
     return end not in (sp.oo, -sp.oo)
 
 
+@lru_cache(maxsize=1024)
+def _assumptions_of(bounds: Bounds) -> tuple[tuple[str, bool], ...]:
+    """`Bounds.assumptions`, kept: a function of the (frozen, hashable) bounds alone."""
+    return bounds._assumptions()
+
+
 @dataclass(frozen=True)
 class Bounds:
     """A domain as an interval of the real line, with the text it was written in."""
@@ -158,7 +164,11 @@ class Bounds:
 
     def assumptions(self) -> dict[str, bool]:
         """The strongest sympy assumptions the domain gives (``Symbol(name, **assumptions())``):
-        real always; positive, nonnegative, negative or nonpositive where an end at 0 or beyond says so."""
+        real always; positive, nonnegative, negative or nonpositive where an end at 0 or beyond says so.
+        Worked out once per domain (the exact judge asks for every symbol of every expression)."""
+        return dict(_assumptions_of(self))
+
+    def _assumptions(self) -> tuple[tuple[str, bool], ...]:
         out = {"real": True}
         lo, hi = (e if e.is_number else None for e in (self.lo, self.hi))  # an end with parameters says nothing
         if lo is not None and (lo > 0 or (lo == 0 and self.left_open)):
@@ -169,7 +179,7 @@ class Bounds:
             out["negative"] = True
         elif hi == 0:
             out["nonpositive"] = True
-        return out
+        return tuple(out.items())
 
     def predicates(self, symbol: sp.Symbol) -> sp.Basic:
         """The domain as `Q` predicates on ``symbol``, for ``refine``: Q.real, and each finite end as

@@ -103,10 +103,28 @@ def _time_derivative(expr: sp.Derivative) -> tuple[str, int] | None:
     return name, len(expr.variables)
 
 
+#: (sum, order) -> its terms in printing order, shared by the two printers: sympy's ordering (``as_terms``,
+#: a float of every coefficient) is a third of a read-back's cost, and both print the same sums
+_ORDERED: dict[tuple[sp.Basic, str | None], list[sp.Basic]] = {}
+_ORDERED_MAX = 4096
+
+
 class _Notation:
     """Prints q(t), q'(t), q''(t) in the book's notation while printing, not by rebuilding the
     expression with symbols (which re-evaluates every product and sum it touches: tens of
     milliseconds for a Lagrangian, on every check)."""
+
+    def _as_ordered_terms(self, expr: sp.Basic, order: str | None = None) -> list[sp.Basic]:
+        order = order or self.order
+        if order in ("old", "none"):
+            return super()._as_ordered_terms(expr, order)
+        key = (expr, order)  # a function of the sum's structure alone (equal sums print alike)
+        terms = _ORDERED.get(key)
+        if terms is None:
+            if len(_ORDERED) >= _ORDERED_MAX:
+                _ORDERED.clear()
+            terms = _ORDERED[key] = expr.as_ordered_terms(order=order)
+        return list(terms)
 
     def _notation(self, name: str, order: int) -> str:
         raise NotImplementedError
@@ -134,6 +152,17 @@ class _UnicodeLine(_Notation, _OneLine):
 
 class _Latex(_Notation, LatexPrinter):
     def _print_Symbol(self, expr: sp.Symbol, style: str = "plain") -> str:
+        # a function of the name and style alone (and of the printer's fixed settings): each is worked out once
+        texts = self.__dict__.setdefault("_symbol_texts", {})
+        key = (expr.name, style)
+        text = texts.get(key)
+        if text is None:
+            if len(texts) >= _ORDERED_MAX:
+                texts.clear()
+            text = texts[key] = self._symbol_text(expr, style)
+        return text
+
+    def _symbol_text(self, expr: sp.Symbol, style: str) -> str:
         if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", expr.name):  # already LaTeX (the notation's \dot{x})
             return super()._print_Symbol(expr, style)
         name = _latex_name(expr.name)  # eps as \mathrm{eps}, not the product e p s

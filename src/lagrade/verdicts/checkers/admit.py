@@ -24,6 +24,7 @@ that still rests on an unproved flagged expression. The rule, in words, is in do
 from __future__ import annotations
 
 import time
+import weakref
 from collections.abc import Callable
 from contextvars import ContextVar
 from dataclasses import dataclass, field
@@ -34,6 +35,7 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from lagrade.compare.equations import slopes
 from lagrade.derive.effects import DISSIPATION
 from lagrade.verdicts.result import PartResult
 from lagrade.problem.spec import Part
@@ -155,11 +157,12 @@ def screen(expr: sp.Expr, part: Part, mech) -> sp.Expr:
     """``expr`` (in state symbols) with its simple floats made exact; records what makes sampling
     insufficient, and raises `Refuted` for an answer with an imaginary part."""
     notes: list[str] = []
+    constants = None
     if part.kind not in NUMERIC_KINDS:  # a numerical solution is numbers, compared within a tolerance
-        expr, notes = _numbers(expr)
+        expr, notes, constants = _numbers(expr)
         notes += _constructs(expr, part, mech)
         notes += _negligible(expr, part, mech)
-    if _maybe_complex(expr):
+    if _maybe_complex(expr, constants):
         _reality(expr, part, mech)
     current = _SCREEN.get()
     if notes and current is not None:  # each reading is pending anew (two entries may be the same expression)
@@ -168,9 +171,10 @@ def screen(expr: sp.Expr, part: Part, mech) -> sp.Expr:
     return expr
 
 
-def _numbers(expr: sp.Expr) -> tuple[sp.Expr, list[str]]:
+def _numbers(expr: sp.Expr) -> tuple[sp.Expr, list[str], list[sp.Basic]]:
     """Floats near a simple number become it; other floats become their exact value and are noted
-    (the first few), as are rationals with large denominators and constants far from unit size."""
+    (the first few), as are rationals with large denominators and constants far from unit size.
+    Returns the expression, the notes and its `_constants` (which `_maybe_complex` reads too)."""
     notes: list[str] = []
     for r in expr.atoms(sp.Rational):
         if r.q > SIMPLE_DENOMINATOR * 1000 or abs(r.p) > 10 ** 12:
@@ -186,7 +190,8 @@ def _numbers(expr: sp.Expr) -> tuple[sp.Expr, list[str]]:
         notes.append(f"the number {_short(f)} is not exact{off}")
         exact[f] = sp.Rational(f)
     expr = expr.xreplace(exact) if exact else expr
-    for c in _constants(expr):
+    constants = _constants(expr)
+    for c in constants:
         try:  # in sympy's floats: exp(-1000) is below the smallest double
             size = abs(c.evalf(20))
             small, large = bool(size < CONSTANT_SIZES[0]), bool(size > CONSTANT_SIZES[1])
@@ -199,7 +204,7 @@ def _numbers(expr: sp.Expr) -> tuple[sp.Expr, list[str]]:
         if near is not None:
             notes.append(f"the constant {_short(c)} is within {_g(abs(c.evalf(50) - near.evalf(50)))} of {near} "
                          "without being equal to it")
-    return expr, notes
+    return expr, notes, constants
 
 
 def _short(x: sp.Basic) -> str:
@@ -280,13 +285,32 @@ def _constants(expr: sp.Basic) -> list[sp.Basic]:
             out.append(e)
             continue
         if e.is_Add or e.is_Mul:
-            const, rest = e.as_independent(*e.free_symbols, as_Add=e.is_Add)
+            const, rest = _independent(e)
             if not const.is_Atom:
                 out.append(const)
             stack.extend(sp.Add.make_args(rest) if e.is_Add else sp.Mul.make_args(rest))
             continue
         stack.extend(e.args)
     return out
+
+
+def _independent(e: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """``e.as_independent(*e.free_symbols, as_Add=e.is_Add)`` for a sum or product, the same expressions,
+    built as sympy builds them. sympy sifts the arguments by ``a.has(*(a.free_symbols & symbols))``, a
+    search of each argument's tree; where every free symbol of a commutative ``e`` is a Symbol that is
+    exactly "the argument has a free symbol", which this tests instead."""
+    from sympy.core.add import _unevaluated_Add
+    from sympy.core.mul import _unevaluated_Mul
+
+    free = e.free_symbols
+    if not e.is_commutative or not all(isinstance(s, sp.Symbol) for s in free):
+        return e.as_independent(*free, as_Add=e.is_Add)
+    args = list(e.args) if e.is_Add else e.args_cnc()[0]
+    indep = [a for a in args if not a.free_symbols]
+    depend = [a for a in args if a.free_symbols]
+    if e.is_Add:
+        return sp.Add(*indep), _unevaluated_Add(*depend)
+    return sp.Mul(*indep), _unevaluated_Mul(*depend)
 
 
 def _constructs(expr: sp.Expr, part: Part, mech) -> list[str]:
@@ -458,12 +482,13 @@ def _both_signs(arg: sp.Expr, mech, part: Part) -> bool:
     return bool(np.sum(values > 0) >= 3 and np.sum(values < 0) >= 3)
 
 
-def _maybe_complex(expr: sp.Basic) -> bool:
+def _maybe_complex(expr: sp.Basic, constants: list[sp.Basic] | None = None) -> bool:
     """I, or a constant that is not real (asin(2) - pi/2, (-1)**(1/3)): evaluated in complex arithmetic,
-    which numpy's real evaluation would turn into its real part."""
+    which numpy's real evaluation would turn into its real part. ``constants``: ``_constants(expr)``
+    when the caller has them."""
     if expr.has(sp.I):
         return True
-    for c in _constants(expr):
+    for c in _constants(expr) if constants is None else constants:
         try:
             if sp.im(c.evalf(30)) != 0:
                 return True
@@ -631,12 +656,31 @@ def _negligible(expr: sp.Expr, part: Part, mech) -> list[str]:
 SAMPLED_STATES = 24
 
 
+#: mech -> (part, symbols) -> the states `comparison_states` gives: a function of those alone (seeded), the
+#: same for every answer to the part; kept beside the scene, not in it (the references' disk cache)
+_STATES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def comparison_states(free: list[sp.Symbol], mech, part: Part) -> list[dict[sp.Symbol, np.ndarray]]:
     """The states at which the checkers compare a part, as arrays for the symbols ``free``: the
     values' and equations' (``rng_for(problem, part)``), and the same with parameters shared by groups
     of four (the Lagrangian's, `dynamics._grouped_points`). The momenta are the true ones at the
     sampled velocities, as the checkers compare them (uniform ones missed a term large only where the
-    true momenta never go); symbols they do not sample (a part's own names) get values of their own."""
+    true momenta never go); symbols they do not sample (a part's own names) get values of their own.
+    Computed once per part and symbols (read-only arrays)."""
+    key = (mech.problem.id, part.name, tuple(part.symbols), tuple(sorted(part.symbol_domains.items())), tuple(free))
+    try:
+        known = _STATES.setdefault(mech, {})
+    except TypeError:  # not weakly referable: computed each time
+        known = {}
+    if key not in known:
+        if len(known) >= 256:
+            known.clear()
+        known[key] = _comparison_states(free, mech, part)
+    return known[key]
+
+
+def _comparison_states(free: list[sp.Symbol], mech, part: Part) -> list[dict[sp.Symbol, np.ndarray]]:
     from lagrade.compare.sampling import grouped, rng_for, sample_points, state_arrays
 
     def base():
@@ -834,23 +878,30 @@ def linear_rows(rows: list[sp.Expr], unknowns: list[sp.Symbol], what: str, secon
 
     out = []
     for i, row in enumerate(rows, 1):
-        if not _is_linear(row, unknowns):
+        ds = _slopes(row, unknowns)
+        if not _is_linear(ds):
             try:
                 with time_bound(seconds):
                     row = sp.numer(sp.together(row))
-                    linear = _is_linear(row, unknowns)
+                    ds = _slopes(row, unknowns)
+                    linear = _is_linear(ds)
             except _OutOfTime:
                 linear = False
             if not linear:
                 raise Refuted(f"equation {i} is not linear in the {what} (even with its denominators cleared), so "
                               f"{what} other than the true ones satisfy it too: your equations allow other {what}")
-        if any(sp.diff(row, u).has(*SWITCHES) for u in unknowns if row.has(u)):
+        if any(d.has(*SWITCHES) for d in ds.values()):
             raise Refuted(f"in equation {i} the {what} are multiplied by a switch (Piecewise, Heaviside, Max, "
                           f"sign, ...): where it is zero the equation says nothing, and other {what} satisfy it")
         out.append(row)
     return out
 
 
-def _is_linear(row: sp.Expr, unknowns: list[sp.Symbol]) -> bool:
-    present = [u for u in unknowns if row.has(u)]
-    return all(not sp.diff(row, u).has(*present) for u in present)
+def _slopes(row: sp.Expr, unknowns: list[sp.Symbol]) -> dict[sp.Symbol, sp.Expr]:
+    """d row / d u for each unknown ``u`` the row contains (computed once: the linearity test and the
+    switch test both read them)."""
+    return slopes(row, [u for u in unknowns if row.has(u)])
+
+
+def _is_linear(slopes: dict[sp.Symbol, sp.Expr]) -> bool:
+    return all(not d.has(*slopes) for d in slopes.values())

@@ -28,8 +28,8 @@ from lagrade.verdicts.checkers.base import (
     read_sympy,
 )
 from lagrade.compare.certify import Certificate, certify, outside_span, sign_change, zero_at
-from lagrade.compare.equations import CompiledRows, analyse_rows
-from lagrade.compare import exact
+from lagrade.compare.equations import CompiledRows, analyse_rows, slopes
+from lagrade.compare import coprime, exact
 from lagrade.compare.symbolic import _OutOfTime, proves_all_zero, proves_zero, time_bound
 from lagrade.compare.trajectory import Comparison, compare_runs, confirm_refutation
 from lagrade.derive.effects import machinery
@@ -619,15 +619,33 @@ def _row_factors(row: sp.Expr, qdd: list[sp.Symbol], positive: set[str]) -> tupl
     and every denominator are of one sign, there is none to find (the common case, at no factoring)."""
     assumed = exact._assume(row, positive)
     acc = [exact._assume(a, positive) for a in qdd]
-    coefficients = [c for a in acc if (c := sp.diff(assumed, a)) != 0]
+    coefficients = [c for c in slopes(assumed, acc).values() if c != 0]  # sp.diff(assumed, a), cheaper
     bases = list(exact.poles(assumed))  # what it divides by, anywhere (a tan(u)'s cos(u) too)
     if coefficients and _definite(min(coefficients, key=sp.count_ops)) and all(_definite(b) for b in bases):
         return [], []
     num = sp.fraction(sp.together(assumed))[0]
     poly = sp.Poly(num, *acc)
-    common = sp.gcd_list(poly.coeffs()) if len(poly.coeffs()) > 1 else poly.coeffs()[0]
+    common = _common_factor(poly.coeffs()) if len(poly.coeffs()) > 1 else poly.coeffs()[0]
     factors = [f for f, _ in sp.factor_list(common)[1] if f.free_symbols] if common.free_symbols else []
     return factors, [f for b in bases if b.free_symbols for f, _ in sp.factor_list(b)[1] if f.free_symbols]
+
+
+def _common_factor(coefficients: list[sp.Expr]) -> sp.Expr:
+    """``sp.gcd_list(coefficients)`` up to a constant factor (which the factors taken from it ignore): in the
+    ring sympy's gcd would use, a monomial when `coprime.monomial_gcd` proves the gcd is one (the common
+    case, at a fraction of the cost), else sympy's gcd itself."""
+    from sympy.polys.polyerrors import PolificationFailed
+    from sympy.polys.polytools import parallel_poly_from_expr
+
+    try:
+        polys, opt = parallel_poly_from_expr(coefficients)
+    except PolificationFailed:
+        polys = []
+    if polys and all(p.domain.is_ZZ or p.domain.is_QQ for p in polys):
+        low = coprime.monomial_gcd([p.as_dict(native=True) for p in polys])
+        if low is not None:
+            return sp.Mul(*(g**e for g, e in zip(opt.gens, low) if e))
+    return sp.gcd_list(coefficients)
 
 
 def _singular_factor(rows: list[sp.Expr], mech: Mechanics, ctx: Context) -> str | None:
@@ -1152,16 +1170,20 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
     eq_exprs = [mech.parse(mech.system.equilibrium.get(name, "0")) for name in mech.names]
     pargs = [*mech.params, *extra]
     q_star = evaluate(eq_exprs, [T, *pargs], [pts[T], *pts.args(pargs)])
-    state = [*mech.s.qdd, *mech.s.qd, *mech.s.q]
     args = [*mech.s.q, *mech.s.qd, *mech.s.qdd, T, *pargs]
     zeros = np.zeros((n, pts.K))
     at_eq = [*q_star, *zeros, *zeros, pts[T], *pts.args(pargs)]
 
-    def linear_part(exprs):
-        jac = evaluate([sp.diff(e, v) for e in exprs for v in state], args, at_eq)
+    def derivatives(e: sp.Expr) -> list[sp.Expr]:  # d e/d(state), the accelerations' read off a linear row
+        return [*slopes(e, list(mech.s.qdd)).values(), *(sp.diff(e, v) for v in [*mech.s.qd, *mech.s.q])]
+
+    def linear_part(exprs, derivs=None):
+        derivs = derivs or [derivatives(e) for e in exprs]
+        jac = evaluate([d for row in derivs for d in row], args, at_eq)
         return jac.reshape(len(exprs), 3 * n, pts.K), evaluate(exprs, args, at_eq)
 
-    A_s, g0 = linear_part(rows)
+    their_derivs = [derivatives(e) for e in rows]  # the student's: for the linear parts, and their rows below
+    A_s, g0 = linear_part(rows, their_derivs)
     key = (part.name, tuple(part.symbols))  # the states above depend on nothing else
     if key not in mech.linearized:
         mech.linearized[key] = linear_part(mech.EL)
@@ -1181,8 +1203,8 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
         consistent.append(ok)
     at = {**dict(zip(mech.s.q, eq_exprs)), **{v: 0 for v in [*mech.s.qd, *mech.s.qdd]}}
 
-    def affine(e: sp.Expr) -> list[sp.Expr]:  # [d e/d(state) | e], at equilibrium
-        return [*(sp.diff(e, v).xreplace(at) for v in state), e.xreplace(at)]
+    def affine(e: sp.Expr, derivs: list[sp.Expr] | None = None) -> list[sp.Expr]:  # [d e/d(state) | e], at equilibrium
+        return [*(d.xreplace(at) for d in derivs or derivatives(e)), e.xreplace(at)]
 
     if ("affine", key) not in mech.linearized:  # the true rows' [d/d(state) | value]: once per problem
         mech.linearized[("affine", key)] = ([affine(e) for e in mech.EL], None)
@@ -1191,7 +1213,7 @@ def _check_linearized(ctx: Context, part: Part, mech: Mechanics, rows: list[sp.E
 
     def their_row(i: int) -> list[sp.Expr]:
         if i not in theirs:
-            theirs[i] = affine(rows[i])
+            theirs[i] = affine(rows[i], their_derivs[i])
         return theirs[i]
 
     for i in [i for i, ok in enumerate(consistent) if not ok]:
