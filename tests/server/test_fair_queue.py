@@ -164,8 +164,10 @@ def test_the_same_program_from_another_student_gets_its_result_without_a_grader(
               "parts": [{"part": "L", "verdict": "correct", "score": 1.0, "max_score": 1.0, "method": "exact",
                          "feedback": "right", "read_back": ["L", "L"]}]}
     q._done(first, dict(result))
-    nxt = q._next()  # bob's and carol's copies are answered here: dave's other program is next
+    nxt = q._next()  # bob's and carol's copies are found kept: dave's other program is next
     assert nxt is not None and nxt["server_id"] == other and q._next() is None
+    assert not db.attempt(ids["bob"]).graded  # written once the graders have their jobs
+    q._answer_kept()
     for who in ("bob", "carol"):
         att = db.attempt(ids[who])
         assert att.graded and att.student == who and att.result["score"] == 2.0

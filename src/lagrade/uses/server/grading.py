@@ -193,6 +193,7 @@ class GradingQueue:
         self.graded = 0
         #: results by program, across the graders: a class hands in the same program again and again
         self.results = ResultMemo()
+        self._answered: deque[tuple[dict[str, Any], dict[str, Any]]] = deque()  # found kept by `_next`
         self._dask_warm = False  # the Dask workers' graders are warm (`_run_dask`)
         #: called with an attempt's id once its grade is written (the LMS grade sender's wake-up)
         self.on_graded = None
@@ -387,8 +388,10 @@ class GradingQueue:
             self._used[student].append((time.monotonic(), seconds))
 
     def _next(self) -> dict[str, Any] | None:
-        """The next attempt's job for a grader; one whose program was graded before with the same
-        settings (by any of the graders) gets that result here and now (`ResultMemo`)."""
+        """The next attempt's job for a grader. One whose program was graded before with the same
+        settings (by any of the graders) gets that result instead (`ResultMemo`), written by
+        :meth:`_answer_kept` once the graders have their jobs: a grader is never kept waiting while
+        this thread writes grades it did not need to work out."""
         while True:
             with self._lock:
                 sid = self._pick()
@@ -404,10 +407,15 @@ class GradingQueue:
                 kept = self.results.get(job, key)
                 if kept is None:
                     return job
-                self._done(job, kept)
+                self._answered.append((job, kept))
                 continue
             with self._lock:
                 self._forget(sid)
+
+    def _answer_kept(self) -> None:
+        """Write the grades :meth:`_next` found kept (this thread's, after the graders got their jobs)."""
+        while self._answered:
+            self._done(*self._answered.popleft())
 
     def _done(self, job: dict[str, Any], result: dict[str, Any]) -> None:
         sid = job["server_id"]
@@ -505,6 +513,7 @@ class GradingQueue:
                         g.submit(job)
                         if job.get("rerun"):
                             g.lowered = True
+                self._answer_kept()
                 busy = [g for g in graders if g.job is not None]
                 # while a grading may go over its budget, look every 0.1 s (a walk of /proc costs
                 # about a millisecond): each tenth of a second later is CPU the quick answers lose
@@ -520,6 +529,7 @@ class GradingQueue:
                 with self._lock:
                     self._slow_free = 0  # a grader that answers takes no rerun: the next round decides
                 look_after(graders, sources, ready, time.monotonic(), self._done, self._next)
+                self._answer_kept()
         except Exception:
             log.exception("the grading thread stopped; queued attempts are graded when the server starts again")
         finally:
@@ -563,6 +573,7 @@ class GradingQueue:
             while not self._stopping:
                 while (job := self._next()) is not None:
                     flying[client.submit(dask_grade, job, sources, pure=False, retries=1)] = job
+                self._answer_kept()
                 if wait([self._wake_r], timeout=0.2):
                     os.read(self._wake_r, 4096)
                 for fut in [f for f in flying if f.done()]:
