@@ -70,7 +70,7 @@ def main() -> None:
     def served(s: dict) -> str:
         return (f"p95 {s['p95']:.1f} s, {s['throughput']:.1f}/s, {s['server_cpu_ms'] + s['graders_cpu_ms']:.0f} ms CPU "
                 f"a submission (web process {s['server_cpu_ms']:.0f} ms), {s['burst_idle']:.1f} s of CPU over two "
-                f"idle cores")
+                f"idle cores; the simulated students' own {s['clients_cpu']:.1f} s on the same cores")
 
     w = check["wall"]
     rows = [

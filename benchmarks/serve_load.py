@@ -313,6 +313,7 @@ def measure(args, work: Path) -> None:
         say(f"server ready (a grader warm) in {time.monotonic() - t:.1f} s; {warmup:g} s more for the others")
         time.sleep(warmup)  # let the other graders warm up too
         cpu0 = cpu_seconds(server.pid)
+        own0 = time.process_time()
         t0 = time.monotonic()
         say(f"{len(tokens)} students submit, arriving over {args.spread:g} s")
         results = asyncio.run(run(base, tokens, args.spread, args.deadline, args.seed, args.mix, args.hostile,
@@ -320,6 +321,7 @@ def measure(args, work: Path) -> None:
             if tokens else []
         wall = time.monotonic() - t0
         cpu1 = cpu_seconds(server.pid)
+        clients = time.process_time() - own0  # the simulated students' own CPU, on the same cores
         if not args.no_probe:
             say("head-of-line probe: ten infinite loops, then another student's right answer")
         probed = None if args.no_probe else asyncio.run(probe(base, looper, prober))
@@ -358,12 +360,14 @@ def measure(args, work: Path) -> None:
     burst = ((cpu1[0] - cpu0[0]) + (cpu1[1] - cpu0[1])) / (os.cpu_count() or 1)
     print(f"  the run's CPU spread over {os.cpu_count()} idle cores: {burst:.1f} s (what the burst's last grade would "
           f"wait for on an idle machine at best; on a loaded one the wall times above include the other load)")
+    print(f"  the simulated students' own CPU during the run (this process: HTTP clients on the same cores as the "
+          f"server): {clients:.1f} s")
     print(f"  errors {len(errors)}, lost {lost}, graded twice {twice}")
     if args.json is not None:
         args.json.write_text(json.dumps({
             "p50": q[49], "p95": q[94], "max": max(ok, default=float("nan")), "throughput": len(ok) / wall,
             "wall": wall, "server_cpu_ms": (cpu1[0] - cpu0[0]) / n * 1e3, "graders_cpu_ms": (cpu1[1] - cpu0[1]) / n * 1e3,
-            "burst_idle": burst, "errors": len(errors), "lost": lost, "twice": twice}))
+            "burst_idle": burst, "clients_cpu": clients, "errors": len(errors), "lost": lost, "twice": twice}))
     if probed is not None:
         print(f"  head-of-line probe: the right answer behind another student's ten infinite loops "
               f"{'graded' if probed['ok'] else 'NOT graded'} in {probed['seconds']:.2f} s "

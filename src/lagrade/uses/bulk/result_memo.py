@@ -19,9 +19,9 @@ from typing import Any
 
 from lagrade.answer.reading.program_key import program_key
 
-#: distinct programs whose results a memo keeps, the least recently used dropped first (a result is a
-#: few kB of JSON)
-ENTRIES = 1024
+#: distinct programs whose results a memo keeps, the least recently used dropped first (a result is about
+#: 20 kB of JSON with its read-back: 5 MB)
+ENTRIES = 256
 #: the statuses that are the file's own doing, the same on every run of its program
 KEPT_STATUSES = ("ok", "syntax", "rejected")
 #: what a kept result leaves out: whose it was, how long it took, and its picture (kept apart, by the
