@@ -167,9 +167,10 @@ def stop_serve(proc, kill: bool = False) -> None:
 
 
 @contextlib.contextmanager
-def on_a_socket(app):
-    """``app`` served by uvicorn on a free port of 127.0.0.1 in a thread (lifespan off: the caller's
-    graders), yielding its URL; stopped on exit."""
+def on_a_socket(app, **config):
+    """``app`` served by uvicorn on a free port of 127.0.0.1 in a thread (lifespan off unless
+    ``config`` says otherwise: the caller's graders), yielding its URL (https with a certificate);
+    stopped on exit. ``config``: more of uvicorn's options (proxy headers, TLS)."""
     import socket
     import threading
     import time
@@ -179,7 +180,8 @@ def on_a_socket(app):
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
-    server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, lifespan="off", log_level="warning"))
+    config = {"lifespan": "off", **config}
+    server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning", **config))
     thread = threading.Thread(target=server.run, daemon=True)
     thread.start()
     for _ in range(200):
@@ -187,7 +189,7 @@ def on_a_socket(app):
             break
         time.sleep(0.05)
     try:
-        yield f"http://127.0.0.1:{port}"
+        yield f"{'https' if config.get('ssl_certfile') else 'http'}://127.0.0.1:{port}"
     finally:
         server.should_exit = True
         thread.join(timeout=10)

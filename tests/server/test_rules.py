@@ -7,7 +7,7 @@ import re
 
 import pytest
 from fastapi.testclient import TestClient
-from serverkit import PROBLEMS, bearer, make_config, sign_in
+from serverkit import PROBLEMS, bearer, make_config, on_a_socket, sign_in
 
 from lagrade.uses.server.app import create_app
 from lagrade.uses.server.tokens import INSTRUCTOR
@@ -167,31 +167,16 @@ def test_named_is_the_default_and_keeps_the_named_mistake_without_hints(graded):
 def test_check_server_honours_the_feedback_level(verdict_only, tmp_path):
     """`lagrade check --server` prints what the server lets the student see: here the verdict alone."""
     import json
-    import socket
-    import threading
-    import time
 
-    import uvicorn
     from click.testing import CliRunner
 
     from lagrade.cli import main
 
     app, _ = verdict_only
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = s.getsockname()[1]
-    server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, lifespan="off", log_level="warning"))
-    thread = threading.Thread(target=server.run, daemon=True)
-    thread.start()
-    try:
-        for _ in range(200):
-            if server.started:
-                break
-            time.sleep(0.05)
+    with on_a_socket(app) as url:
         answer = tmp_path / "answer.toml"
         answer.write_text(f'L = "{NAMED_L}"\n', encoding="utf-8")
         token = bearer(app, "hank")["Authorization"].split()[1]
-        url = f"http://127.0.0.1:{port}"
         out = CliRunner().invoke(main, ["check", "12.14", str(answer), "--server", url, "--token", token, "--json"])
         got = json.loads(out.output)
         L = next(p for p in got["parts"] if p["part"] == "L")
@@ -199,9 +184,6 @@ def test_check_server_honours_the_feedback_level(verdict_only, tmp_path):
         assert got["rules"]["attempt"] == 1 and got["rules"]["attempts_allowed"] == 2
         text = CliRunner().invoke(main, ["check", "12.14", str(answer), "--server", url, "--token", token])
         assert "cross term" not in text.output and "attempt 1 of 2" in text.output
-    finally:
-        server.should_exit = True
-        thread.join(timeout=10)
 
 
 def test_check_server_text_says_the_evidence_in_words(graded, live_url, tmp_path):

@@ -9,13 +9,11 @@ import http.client
 import logging
 import re
 import shutil
-import socket
-import threading
 import time
 
 import pytest
 from fastapi.testclient import TestClient
-from serverkit import make_config, sign_in
+from serverkit import make_config, on_a_socket, sign_in
 
 from lagrade.uses.server.app import create_app
 from lagrade.uses.server.state import SESSION_COOKIE
@@ -79,22 +77,6 @@ def test_cookies_are_secure_over_https(tmp_path):
         assert "secure" in _set_cookie(client.get("/"), "lagrade_login").lower()
 
 
-def _serve(app, **kw):
-    import uvicorn
-
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = s.getsockname()[1]
-    server = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_level="warning", **kw))
-    thread = threading.Thread(target=server.run, daemon=True)
-    thread.start()
-    for _ in range(200):
-        if server.started:
-            break
-        time.sleep(0.05)
-    return server, thread, port
-
-
 @pytest.mark.parametrize("allowed", ["127.0.0.1", "192.0.2.1", ""])
 def test_a_trusted_proxy_says_https_by_x_forwarded_proto(tmp_path, allowed):
     """uvicorn believes X-Forwarded-Proto from --forwarded-allow-ips only (by default from no one)."""
@@ -102,18 +84,17 @@ def test_a_trusted_proxy_says_https_by_x_forwarded_proto(tmp_path, allowed):
 
     trusted = allowed == "127.0.0.1"
     app = create_app(make_config(tmp_path), grade=False)
-    server, thread, port = _serve(app, **proxy_options(allowed))
     try:
-        conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
-        conn.request("GET", "/", headers={"X-Forwarded-Proto": "https"})
-        r = conn.getresponse()
-        cookie = [v for k, v in r.getheaders() if k.lower() == "set-cookie" and v.startswith("lagrade_login=")][0]
-        r.read()
-        conn.close()
+        with on_a_socket(app, lifespan="auto", **proxy_options(allowed)) as url:
+            port = int(url.rsplit(":", 1)[1])
+            conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+            conn.request("GET", "/", headers={"X-Forwarded-Proto": "https"})
+            r = conn.getresponse()
+            cookie = [v for k, v in r.getheaders() if k.lower() == "set-cookie" and v.startswith("lagrade_login=")][0]
+            r.read()
+            conn.close()
         assert ("secure" in cookie.lower()) == trusted, cookie
     finally:
-        server.should_exit = True
-        thread.join(timeout=10)
         app.state.server.stop()
 
 
@@ -259,10 +240,10 @@ def test_serve_over_tls_with_a_certificate(tmp_path):
                     "-addext", "subjectAltName=IP:127.0.0.1", "-keyout", str(key), "-out", str(cert)],
                    check=True, capture_output=True, timeout=60)
     app = create_app(make_config(tmp_path), grade=False)
-    server, thread, port = _serve(app, ssl_certfile=str(cert), ssl_keyfile=str(key))
     try:
         trust = ssl.create_default_context(cafile=str(cert))
-        with httpx.Client(base_url=f"https://127.0.0.1:{port}", verify=trust, timeout=10) as browser:
+        with on_a_socket(app, lifespan="auto", ssl_certfile=str(cert), ssl_keyfile=str(key)) as url, \
+                httpx.Client(base_url=url, verify=trust, timeout=10) as browser:
             page = browser.get("/login", params={"token": issue(app.state.server.secret, "alice")})
             assert "secure" in _set_cookie(page, "lagrade_login").lower()
             token = issue(app.state.server.secret, "alice")
@@ -271,8 +252,6 @@ def test_serve_over_tls_with_a_certificate(tmp_path):
             assert r.status_code == 303 and "secure" in _set_cookie(r, SESSION_COOKIE).lower()
             assert "signed in as" in browser.get("/").text
     finally:
-        server.should_exit = True
-        thread.join(timeout=10)
         app.state.server.stop()
 
 
