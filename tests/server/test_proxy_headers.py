@@ -9,8 +9,7 @@ import http.client
 
 import pytest
 from click.testing import CliRunner
-from serverkit import ASSIGNMENT, make_config
-from test_sessions import _serve
+from serverkit import ASSIGNMENT, make_config, on_a_socket
 
 from lagrade.cli import main
 from lagrade.cli.serve import proxy_options
@@ -34,12 +33,10 @@ def _guesses(port: int, n: int) -> list[int]:
 @pytest.mark.parametrize("allowed, limited", [("", True), ("192.0.2.1", True), ("127.0.0.1", False)])
 def test_a_rotated_x_forwarded_for_reaches_the_sign_in_bound(tmp_path, allowed, limited):
     app = create_app(make_config(tmp_path, failed_sign_ins_per_minute=1, failed_sign_in_burst=5), grade=False)
-    server, thread, port = _serve(app, **proxy_options(allowed))
     try:
-        codes = _guesses(port, 8)
+        with on_a_socket(app, lifespan="auto", **proxy_options(allowed)) as url:
+            codes = _guesses(int(url.rsplit(":", 1)[1]), 8)
     finally:
-        server.should_exit = True
-        thread.join(timeout=10)
         app.state.server.stop()
     if limited:  # the peer's own address is counted: the sixth guess on is 429
         assert codes == [401] * 5 + [429] * 3, codes
