@@ -28,38 +28,6 @@ from collections.abc import Sequence
 P = 2**61 - 1
 
 
-def _times(u: list[int], v: list[int]) -> list[int]:
-    out = [0] * (len(u) + len(v) - 1)
-    for i, a in enumerate(u):
-        if a:
-            for j, b in enumerate(v):
-                out[i + j] = (out[i + j] + a * b) % P
-    return out
-
-
-def _trim(u: list[int]) -> list[int]:
-    while u and u[-1] == 0:
-        u.pop()
-    return u
-
-
-def _gcd(u: list[int], v: list[int]) -> list[int]:
-    """The monic gcd in F_p[s] (coefficient lists, lowest degree first; [] is 0)."""
-    u, v = _trim(list(u)), _trim(list(v))
-    while v:
-        inv = pow(v[-1], -1, P)
-        while len(u) >= len(v):
-            c = u[-1] * inv % P
-            shift = len(u) - len(v)
-            for i, b in enumerate(v):
-                u[shift + i] = (u[shift + i] - c * b) % P
-            _trim(u)
-            if not u:
-                break
-        u, v = v, u
-    return u
-
-
 def _residue(c: object) -> int | None:
     """A rational coefficient (any of sympy's ZZ or QQ element types) modulo P; None if P divides its
     denominator."""
@@ -77,38 +45,31 @@ def monomial_gcd(terms: Sequence[dict[tuple[int, ...], object]], seed: int = 0) 
         return None
     n = len(next(iter(terms[0])))
     low = tuple(min(e[k] for t in terms for e in t) for k in range(n))
+    from flint import nmod_poly  # python-flint's polynomials over Z/pZ (multiplication, monic gcd)
+
     rng = random.Random(seed)
     a = [rng.randrange(P) for _ in range(n)]
     b = [rng.randrange(1, P) for _ in range(n)]
     top = [max((sum(e) - sum(low) for e in t), default=0) for t in terms]
-    powers: list[list[list[int]]] = []  # powers[k][d] = (a_k + b_k s)**d
-    for k in range(n):
-        most = max(e[k] - low[k] for t in terms for e in t)
-        row = [[1]]
-        for _ in range(most):
-            row.append(_times(row[-1], [a[k], b[k]]))
-        powers.append(row)
+    line_of = [nmod_poly([a[k], b[k]], P) for k in range(n)]  # x_k = a_k + b_k s
     lines = []
     for t in terms:
-        line = [0]
+        line = nmod_poly([], P)
         for e, c in t.items():
             r = _residue(c)
             if r is None:
                 return None
-            term = [r]
+            term = nmod_poly([r], P)
             for k in range(n):
                 if e[k] - low[k]:
-                    term = _times(term, powers[k][e[k] - low[k]])
-            if len(term) > len(line):
-                line += [0] * (len(term) - len(line))
-            for i, x in enumerate(term):
-                line[i] = (line[i] + x) % P
-        lines.append(_trim(line))
-    if not any(len(line) == d + 1 for line, d in zip(lines, top)):  # top(F_j)(b) = 0 mod p for every j
+                    term *= line_of[k] ** (e[k] - low[k])
+            line += term
+        lines.append(line)
+    if not any(line.degree() == d for line, d in zip(lines, top)):  # top(F_j)(b) = 0 mod p for every j
         return None
     g = lines[0]
     for line in lines[1:]:
-        g = _gcd(g, line)
-        if len(g) == 1:
+        g = g.gcd(line)
+        if g.degree() == 0:
             return low
-    return low if len(g) == 1 else None
+    return low if g.degree() == 0 else None
